@@ -1,0 +1,202 @@
+//! Balls: their kinds (snooker colours) and their mechanical state.
+
+use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+/// A 3-vector of f64 in the table frame (x along the table, y across, z up).
+pub type Vec3 = Vector3<f64>;
+
+/// The phase of a ball's motion; each phase has its own closed-form law (see [`crate::motion`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Motion {
+    /// At rest on the cloth, no spin.
+    Stationary,
+    /// At rest on the cloth but spinning about the vertical.
+    Spinning,
+    /// On the cloth, the contact point slipping.
+    Sliding,
+    /// On the cloth, the contact point at rest (v = w x R e_z).
+    Rolling,
+    /// Off the cloth, in free flight.
+    Airborne,
+    /// Fallen into a pocket; out of play.
+    Pocketed,
+}
+
+impl Motion {
+    /// The name used in the JSON result.
+    pub fn name(self) -> &'static str {
+        match self {
+            Motion::Stationary => "stationary",
+            Motion::Spinning => "spinning",
+            Motion::Sliding => "sliding",
+            Motion::Rolling => "rolling",
+            Motion::Airborne => "airborne",
+            Motion::Pocketed => "pocketed",
+        }
+    }
+
+    /// True for the phases in which the ball's centre moves.
+    pub fn is_moving(self) -> bool {
+        matches!(self, Motion::Sliding | Motion::Rolling | Motion::Airborne)
+    }
+
+    /// True while the ball is on the table (not pocketed).
+    pub fn in_play(self) -> bool {
+        self != Motion::Pocketed
+    }
+}
+
+/// The mechanical state of one ball at one instant.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BallState {
+    /// Centre position, m (z = R on the cloth).
+    pub pos: Vec3,
+    /// Centre velocity, m/s.
+    pub vel: Vec3,
+    /// Angular velocity, rad/s, in the table frame.
+    pub spin: Vec3,
+    /// Which law the ball follows from this state on.
+    pub motion: Motion,
+}
+
+/// Snooker ball kinds: the colour decides the recording's colour and nothing physical.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BallKind {
+    /// The cue ball.
+    Cue,
+    /// A red.
+    Red,
+    /// Yellow (2 points).
+    Yellow,
+    /// Green (3 points).
+    Green,
+    /// Brown (4 points).
+    Brown,
+    /// Blue (5 points).
+    Blue,
+    /// Pink (6 points).
+    Pink,
+    /// Black (7 points).
+    Black,
+    /// Any other ball.
+    Other,
+}
+
+impl BallKind {
+    /// The kind a ball id names: "cue"/"white", "red…", or a colour name.
+    pub fn from_id(id: &str) -> BallKind {
+        let id = id.to_ascii_lowercase();
+        let prefixes = [
+            ("cue", BallKind::Cue),
+            ("white", BallKind::Cue),
+            ("red", BallKind::Red),
+            ("yellow", BallKind::Yellow),
+            ("green", BallKind::Green),
+            ("brown", BallKind::Brown),
+            ("blue", BallKind::Blue),
+            ("pink", BallKind::Pink),
+            ("black", BallKind::Black),
+        ];
+        prefixes
+            .iter()
+            .find(|(p, _)| id.starts_with(p))
+            .map(|&(_, k)| k)
+            .unwrap_or(BallKind::Other)
+    }
+
+    /// sRGB colour of the ball.
+    pub fn rgb(self) -> [u8; 3] {
+        match self {
+            BallKind::Cue => [245, 245, 235],
+            BallKind::Red => [200, 20, 20],
+            BallKind::Yellow => [240, 210, 20],
+            BallKind::Green => [20, 120, 50],
+            BallKind::Brown => [120, 70, 30],
+            BallKind::Blue => [30, 70, 200],
+            BallKind::Pink => [240, 130, 170],
+            BallKind::Black => [15, 15, 15],
+            BallKind::Other => [150, 150, 150],
+        }
+    }
+}
+
+/// One ball of a scene: its name, kind and starting state.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Ball {
+    /// Unique name, as in the scene file.
+    pub id: String,
+    /// Snooker colour.
+    pub kind: BallKind,
+    /// State at the start of the shot.
+    pub state: BallState,
+}
+
+impl BallState {
+    /// A ball at rest on the cloth at (x, y).
+    pub fn at_rest(x: f64, y: f64, radius: f64) -> BallState {
+        BallState {
+            pos: Vec3::new(x, y, radius),
+            vel: Vec3::zeros(),
+            spin: Vec3::zeros(),
+            motion: Motion::Stationary,
+        }
+    }
+
+    /// Velocity of the cloth contact point, u = v + w x (-R e_z), horizontal part
+    /// (physics.md: u = (vx - R wy, vy + R wx)).
+    pub fn slip(&self, radius: f64) -> Vec3 {
+        Vec3::new(
+            self.vel.x - radius * self.spin.y,
+            self.vel.y + radius * self.spin.x,
+            0.0,
+        )
+    }
+
+    /// True when every component is finite.
+    pub fn is_finite(&self) -> bool {
+        self.pos
+            .iter()
+            .chain(self.vel.iter())
+            .chain(self.spin.iter())
+            .all(|v| v.is_finite())
+    }
+
+    /// Translational plus rotational kinetic energy, J, plus potential energy above the cloth level.
+    pub fn energy(&self, mass: f64, inertia: f64, radius: f64, g: f64) -> f64 {
+        if self.motion == Motion::Pocketed {
+            return 0.0;
+        }
+        0.5 * mass * self.vel.norm_squared()
+            + 0.5 * inertia * self.spin.norm_squared()
+            + mass * g * (self.pos.z - radius).max(0.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kinds_from_ids() {
+        assert_eq!(BallKind::from_id("cue"), BallKind::Cue);
+        assert_eq!(BallKind::from_id("red7"), BallKind::Red);
+        assert_eq!(BallKind::from_id("Black"), BallKind::Black);
+        assert_eq!(BallKind::from_id("object"), BallKind::Other);
+    }
+
+    #[test]
+    fn rolling_has_no_slip() {
+        let r = 0.0262;
+        let v = Vec3::new(1.0, 0.5, 0.0);
+        let s = BallState {
+            pos: Vec3::new(0.0, 0.0, r),
+            vel: v,
+            spin: Vec3::z().cross(&v) / r,
+            motion: Motion::Rolling,
+        };
+        assert!(s.slip(r).norm() < 1e-15);
+    }
+}

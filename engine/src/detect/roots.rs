@@ -1,0 +1,163 @@
+//! The two root searches every detector reduces to:
+//! - a point (one centre relative to another, or to a circle's centre) entering a sphere or
+//!   circle of radius rho: |d(t)|^2 - rho^2 = 0, a quartic in t;
+//! - a point reaching a line at a given distance: a quadratic in t.
+//!
+//! Roots within the window are isolated by the critical points of the polynomial and refined
+//! by Yuksel's safeguarded Newton method (the `polycool` crate), so a degree that collapses
+//! (equal accelerations, a body at rest) needs no special formula and no division by a
+//! vanishing leading coefficient. A root counts only if the bodies approach there and the
+//! distance checks out.
+
+use super::{ROOT_TIME_TOL, SKIN, TOUCH_TOL, VERIFY_TOL};
+use crate::ball::Vec3;
+use crate::motion::Path;
+use polycool::{Poly, Quadratic};
+
+/// Longest span searched in one go, s.
+pub const MAX_WINDOW: f64 = 1e6;
+
+/// The first time in [0, window] at which the relative path `rel` enters the sphere of radius
+/// `rho` (less the [`SKIN`]) around the origin while approaching it. A path already touching
+/// (within [`TOUCH_TOL`]) and approaching gives 0; one touching and at rest or separating does not.
+pub fn first_entry(rel: &Path, rho: f64, window: f64) -> Option<f64> {
+    let (a, b, c) = (rel.a, rel.b, rel.c);
+    let dist0 = c.norm();
+    if dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0 {
+        return Some(0.0);
+    }
+    let rho = rho - SKIN;
+    if window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window) {
+        return None;
+    }
+    let quartic = Poly::new([
+        c.dot(&c) - rho * rho,
+        2.0 * b.dot(&c),
+        b.dot(&b) + 2.0 * a.dot(&c),
+        2.0 * a.dot(&b),
+        a.dot(&a),
+    ]);
+    // A law that never ends (no friction) is searched over a bounded, still astronomical, span.
+    let window = window.min(MAX_WINDOW);
+    quartic
+        .roots_between(0.0, window, ROOT_TIME_TOL)
+        .into_iter()
+        .find(|&t| {
+            let d = rel.at(t);
+            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+        })
+}
+
+/// The first time in [0, window] at which `path` comes within `dist` of the line through
+/// `point` with unit normal `normal` (plan), from the normal's side and approaching.
+/// Returns the time and the point of the path there.
+pub fn first_line_contact(
+    path: &Path,
+    point: Vec3,
+    normal: Vec3,
+    dist: f64,
+    window: f64,
+) -> Option<(f64, Vec3)> {
+    let s1 = normal.dot(&path.b);
+    let s2 = normal.dot(&path.a);
+    if (normal.dot(&(path.c - point)) - dist).abs() <= TOUCH_TOL && s1 < 0.0 {
+        return Some((0.0, path.c));
+    }
+    let dist = dist - SKIN;
+    let s0 = normal.dot(&(path.c - point)) - dist;
+    if window.is_nan() || window <= 0.0 {
+        return None;
+    }
+    Quadratic::new([s0, s1, s2])
+        .roots()
+        .into_iter()
+        .filter(|&t| (0.0..=window).contains(&t))
+        .find(|&t| {
+            let approaching = s1 + 2.0 * s2 * t < 0.0;
+            let p = path.at(t);
+            approaching && (normal.dot(&(p - point)) - dist).abs() <= VERIFY_TOL
+        })
+        .map(|t| (t, path.at(t)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn path(c: [f64; 3], b: [f64; 3], a: [f64; 3]) -> Path {
+        Path {
+            c: Vec3::from(c),
+            b: Vec3::from(b),
+            a: Vec3::from(a),
+        }
+    }
+
+    #[test]
+    fn head_on_at_constant_speed() {
+        // Degenerate quartic (no acceleration): still exact.
+        let rel = path([1.0, 0.0, 0.0], [-2.0, 0.0, 0.0], [0.0; 3]);
+        let t = first_entry(&rel, 0.0524, 10.0).unwrap();
+        // Contact is taken one skin (1e-10 m) inside 2R.
+        assert!((t - (1.0 - 0.0524) / 2.0).abs() < 1e-10);
+    }
+
+    #[test]
+    fn equal_velocities_never_meet() {
+        let rel = path([0.1, 0.0, 0.0], [0.0; 3], [0.0; 3]);
+        assert_eq!(first_entry(&rel, 0.0524, 10.0), None);
+    }
+
+    #[test]
+    fn touching_now_only_if_approaching() {
+        let rho = 0.0524;
+        let approach = path([rho, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0; 3]);
+        assert_eq!(first_entry(&approach, rho, 1.0), Some(0.0));
+        let leave = path([rho, 0.0, 0.0], [1.0, 0.0, 0.0], [-3.0, 0.0, 0.0]);
+        // Leaves, then comes back under the acceleration: a later, real contact.
+        let t = first_entry(&leave, rho, 10.0).unwrap();
+        assert!((t - 1.0 / 3.0).abs() < 1e-6, "{t}");
+        let rest = path([rho, 0.0, 0.0], [0.0; 3], [0.0; 3]);
+        assert_eq!(first_entry(&rest, rho, 10.0), None);
+    }
+
+    #[test]
+    fn a_graze_is_not_a_contact_but_a_shave_is() {
+        let rho = 0.0524;
+        // Passing at exactly rho: tangent double root, no approach there.
+        let graze = path([-1.0, rho, 0.0], [1.0, 0.0, 0.0], [0.0; 3]);
+        assert_eq!(first_entry(&graze, rho, 10.0), None);
+        // Passing 1 nm inside rho: a real (very thin) contact.
+        let shave = path([-1.0, rho - 1e-9, 0.0], [1.0, 0.0, 0.0], [0.0; 3]);
+        assert!(first_entry(&shave, rho, 10.0).is_some());
+    }
+
+    #[test]
+    fn a_push_from_rest_is_found() {
+        // Touching, no relative velocity, but pressed together: found after sinking one skin.
+        let rho = 0.0524;
+        let press = path([rho, 0.0, 0.0], [0.0; 3], [-1.0, 0.0, 0.0]);
+        let t = first_entry(&press, rho, 1.0).unwrap();
+        assert!(t > 0.0 && t < 2e-5, "{t}");
+        let n = Vec3::y();
+        let press = path([0.0, 0.024, 0.0], [0.0; 3], [0.0, -1.0, 0.0]);
+        assert!(first_line_contact(&press, Vec3::zeros(), n, 0.024, 1.0).is_some());
+    }
+
+    #[test]
+    fn window_is_respected() {
+        let rel = path([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0; 3]);
+        assert_eq!(first_entry(&rel, 0.05, 0.5), None);
+        // A contact exactly at the window end is left to the next window, which starts touching.
+        assert!(first_entry(&rel, 0.05, 0.96).is_some());
+    }
+
+    #[test]
+    fn line_contact_parallel_motion_has_none() {
+        let p = path([1.0, 0.024, 0.0], [1.0, 0.0, 0.0], [-0.1, 0.0, 0.0]);
+        let n = Vec3::y();
+        assert_eq!(first_line_contact(&p, Vec3::zeros(), n, 0.024, 10.0), None);
+        let p = path([1.0, 0.5, 0.0], [0.0, -1.0, 0.0], [0.0; 3]);
+        let (t, at) = first_line_contact(&p, Vec3::zeros(), n, 0.024, 10.0).unwrap();
+        assert!((t - 0.476).abs() < 1e-9 && (at.y - 0.024).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,164 @@
+//! The table: cushion noses (straight segments), pocket jaws (arcs), pocket facings and
+//! pocket falls, all in plan view at the height of the cushion nose.
+//!
+//! Plan vectors are [`Vec3`] with z = 0 so that they combine directly with ball paths.
+
+pub mod layout;
+pub mod snooker;
+
+use crate::ball::Vec3;
+use serde::{Deserialize, Serialize};
+
+pub use snooker::SnookerDims;
+
+/// Which table a scene is played on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum TableKind {
+    /// A full-size snooker table (WPBSA playing area, six pockets).
+    #[default]
+    Snooker,
+    /// Endless cloth: no cushions, no pockets (isolated collisions).
+    Open,
+}
+
+/// A straight cushion nose (or a pocket facing): the ball touches it when its centre is
+/// [`crate::params::Params::cushion_contact_distance`] from the line, on the `normal` side.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Cushion {
+    /// Name used in results ("baulk", "top-right/top facing", ...).
+    pub name: String,
+    /// One end of the nose line (plan, z = 0).
+    pub start: Vec3,
+    /// The other end.
+    pub end: Vec3,
+    /// Unit normal pointing to the side balls are on.
+    pub normal: Vec3,
+}
+
+impl Cushion {
+    /// Length of the segment.
+    pub fn length(&self) -> f64 {
+        (self.end - self.start).norm()
+    }
+
+    /// Unit vector from `start` to `end`.
+    pub fn direction(&self) -> Vec3 {
+        (self.end - self.start).normalize()
+    }
+}
+
+/// A pocket jaw ("knuckle"): the rounded end of a cushion nose, an arc of radius `radius`
+/// around `centre` at the nose height. A ball touches it when its centre is
+/// `radius + R cos(theta)` from `centre` in plan.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Jaw {
+    /// Name used in results.
+    pub name: String,
+    /// Centre of the arc (plan).
+    pub centre: Vec3,
+    /// Radius of the arc, m.
+    pub radius: f64,
+}
+
+/// A pocket: a ball is captured when its centre enters the fall circle.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Pocket {
+    /// Name ("top-left", "middle-right", ...).
+    pub name: String,
+    /// Centre of the fall circle (plan).
+    pub centre: Vec3,
+    /// Radius of the fall circle, m.
+    pub radius: f64,
+    /// Middle of the mouth, between the two jaws (plan).
+    pub mouth: Vec3,
+    /// Distance between the two jaw points, m.
+    pub mouth_width: f64,
+}
+
+/// A table's geometry.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Table {
+    /// Snooker or open.
+    pub kind: TableKind,
+    /// Playing-area length along x, m (0 for the open table).
+    pub length: f64,
+    /// Playing-area width along y, m (0 for the open table).
+    pub width: f64,
+    /// Straight noses and pocket facings.
+    pub cushions: Vec<Cushion>,
+    /// Jaw arcs.
+    pub jaws: Vec<Jaw>,
+    /// Pockets.
+    pub pockets: Vec<Pocket>,
+    /// Markings (baulk line, D, spots), for drawing.
+    pub dims: Option<SnookerDims>,
+}
+
+impl Table {
+    /// The endless cloth.
+    pub fn open() -> Table {
+        Table {
+            kind: TableKind::Open,
+            length: 0.0,
+            width: 0.0,
+            cushions: Vec::new(),
+            jaws: Vec::new(),
+            pockets: Vec::new(),
+            dims: None,
+        }
+    }
+
+    /// A full-size snooker table with the given dimensions.
+    pub fn snooker(dims: &SnookerDims) -> Table {
+        snooker::build(dims)
+    }
+
+    /// Why a ball of radius `radius` cannot rest with its centre at `pos` (plan), if it can't:
+    /// off the playing area, touching into a cushion or jaw, or over a pocket.
+    /// `contact` is the centre's distance to a nose when touching it (R cos theta).
+    pub fn placement_error(&self, pos: Vec3, contact: f64) -> Option<String> {
+        if self.kind == TableKind::Open {
+            return None;
+        }
+        let tol = crate::detect::TOUCH_TOL;
+        let (lo_x, hi_x) = (contact, self.length - contact);
+        let (lo_y, hi_y) = (contact, self.width - contact);
+        if pos.x < lo_x - tol || pos.x > hi_x + tol || pos.y < lo_y - tol || pos.y > hi_y + tol {
+            return Some(format!(
+                "centre ({:.4}, {:.4}) m is off the cloth: a ball's centre must lie in \
+                 [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses)",
+                pos.x, pos.y
+            ));
+        }
+        for jaw in &self.jaws {
+            if (pos - jaw.centre).norm() < jaw.radius + contact - tol {
+                return Some(format!("the ball overlaps the jaw {}", jaw.name));
+            }
+        }
+        for pocket in &self.pockets {
+            if (pos - pocket.centre).norm() < pocket.radius {
+                return Some(format!("the ball is over the {} pocket", pocket.name));
+            }
+        }
+        None
+    }
+
+    /// True when a ball centre at `pos` (plan) is on the playing surface or in a pocket's
+    /// mouth (within one mouth width of its middle), up to `tol` metres: where a ball in play
+    /// may be found during a shot.
+    pub fn holds(&self, pos: Vec3, contact: f64, tol: f64) -> bool {
+        if self.kind == TableKind::Open {
+            return true;
+        }
+        let inside = pos.x >= contact - tol
+            && pos.x <= self.length - contact + tol
+            && pos.y >= contact - tol
+            && pos.y <= self.width - contact + tol;
+        inside
+            || self
+                .pockets
+                .iter()
+                .any(|p| (pos - p.mouth).norm() <= p.mouth_width + tol)
+    }
+}

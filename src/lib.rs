@@ -1,0 +1,5 @@
+//! The `snooker` command-line tool's library: scene files, results and summaries around the
+//! physics in `snooker-engine`.
+
+pub mod output;
+pub mod scene;

@@ -1,0 +1,126 @@
+//! `snooker`: simulate snooker shots from scene files.
+
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+use snooker::{output, scene};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    version,
+    about = "Event-driven snooker physics engine (SI units, table frame)"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Simulate a scene and print a summary (the built-in break-off when no scene is given).
+    Simulate {
+        /// Scene file (TOML); see the README for the format.
+        scene: Option<PathBuf>,
+        /// Write the result as JSON to this file, or to standard output with `-`.
+        #[arg(long, value_name = "OUT")]
+        json: Option<String>,
+        /// Print nothing but errors (and the JSON if it goes to standard output).
+        #[arg(long, short)]
+        quiet: bool,
+    },
+}
+
+/// Exit code for bad input (scene file, arguments).
+const BAD_INPUT: u8 = 2;
+/// Exit code for a simulation that could not finish.
+const SIM_FAILED: u8 = 1;
+
+/// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing
+/// is left half-written.
+fn write_atomic(path: &Path, text: &str) -> anyhow::Result<()> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .context("the output path has no file name")?;
+    let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
+    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
+fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> ExitCode {
+    let loaded = match &scene_path {
+        Some(p) => scene::load(p),
+        None => scene::parse(scene::DEFAULT_SCENE, scene::DEFAULT_SCENE_FILE),
+    };
+    let scene = match loaded {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(BAD_INPUT);
+        }
+    };
+    if let Some(out) = &json {
+        if out != "-" && Path::new(out).is_dir() {
+            eprintln!("error: --json {out}: is a directory, not a file");
+            return ExitCode::from(BAD_INPUT);
+        }
+    }
+    let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!(
+                "error: {}: {e}",
+                scene_path
+                    .as_deref()
+                    .map_or(scene::DEFAULT_SCENE_FILE.into(), |p| p
+                        .display()
+                        .to_string())
+            );
+            return ExitCode::from(SIM_FAILED);
+        }
+    };
+    if !quiet {
+        let text = output::summary(&scene, &shot);
+        if json.as_deref() == Some("-") {
+            eprint!("{text}");
+        } else {
+            print!("{text}");
+        }
+    }
+    if let Some(out) = json {
+        let doc = output::result_json(&scene, &shot);
+        let text = serde_json::to_string_pretty(&doc).expect("JSON of finite numbers");
+        if out == "-" {
+            let mut stdout = std::io::stdout().lock();
+            if writeln!(stdout, "{text}").is_err() {
+                return ExitCode::from(SIM_FAILED);
+            }
+        } else if let Err(e) = write_atomic(Path::new(&out), &(text + "\n")) {
+            eprintln!("error: --json {out}: {e:#}");
+            return ExitCode::from(BAD_INPUT);
+        } else if !quiet {
+            println!("result written to {out}");
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { BAD_INPUT } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match cli.command {
+        Command::Simulate { scene, json, quiet } => simulate(scene, json, quiet),
+    }
+}
