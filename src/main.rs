@@ -65,11 +65,12 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
             return ExitCode::from(BAD_INPUT);
         }
     };
-    if let Some(out) = &json {
-        if out != "-" && Path::new(out).is_dir() {
-            eprintln!("error: --json {out}: is a directory, not a file");
-            return ExitCode::from(BAD_INPUT);
-        }
+    if let Some(out) = json
+        .as_deref()
+        .filter(|o| *o != "-" && Path::new(o).is_dir())
+    {
+        eprintln!("error: --json {out}: is a directory, not a file");
+        return ExitCode::from(BAD_INPUT);
     }
     let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
         Ok(s) => s,

@@ -252,7 +252,7 @@ fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
     ] {
         if let Some(v) = given {
             check_finite(key, &[v], file)?;
-            if v < 0.0 || v > 0.5 {
+            if !(0.0..=0.5).contains(&v) {
                 return Err(fail(key, format!("must lie in [0, 0.5] m, got {v}")));
             }
             *slot = v;

@@ -391,11 +391,9 @@ impl Sim<'_> {
                 self.stats.stale += 1;
                 continue;
             }
-            if let Some(h) = self.opts.horizon {
-                if e.t > h {
-                    self.now = h;
-                    return Ok(Ending::Horizon);
-                }
+            if let Some(h) = self.opts.horizon.filter(|&h| e.t > h) {
+                self.now = h;
+                return Ok(Ending::Horizon);
             }
             if e.t > self.opts.max_time {
                 return Err(SimError::DidNotStop {

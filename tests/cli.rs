@@ -1,0 +1,200 @@
+//! The command line: the default run, the JSON contract, and bad input (one message naming the
+//! file, the key and the reason; exit code 2; nothing written).
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn snooker(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_snooker"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("snooker-cli-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn default_run_prints_a_summary_and_writes_the_contract() {
+    let dir = temp_dir("default");
+    let out = dir.join("r.json");
+    let o = snooker(&["simulate", "--json", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8(o.stdout).unwrap();
+    for needle in [
+        "scene: break-off",
+        "events by kind:",
+        "pots:",
+        "final positions",
+        "simulated",
+    ] {
+        assert!(text.contains(needle), "summary lacks {needle:?}:\n{text}");
+    }
+    let doc: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(doc["scene"], "break-off");
+    let events = doc["events"].as_array().unwrap();
+    let kinds = [
+        "ball_ball",
+        "ball_cushion",
+        "ball_pocket",
+        "slide_to_roll",
+        "slide_to_spin",
+        "slide_to_stop",
+        "roll_to_spin",
+        "roll_to_stop",
+        "spin_to_stop",
+        "landing",
+    ];
+    let motions = [
+        "sliding",
+        "rolling",
+        "spinning",
+        "stationary",
+        "airborne",
+        "pocketed",
+    ];
+    let mut last = 0.0;
+    for e in events {
+        let t = e["t"].as_f64().unwrap();
+        assert!(t >= last);
+        last = t;
+        assert!(kinds.contains(&e["kind"].as_str().unwrap()), "{e}");
+        let balls = e["balls"].as_array().unwrap();
+        for b in balls {
+            let s = &e["after"][b.as_str().unwrap()];
+            assert_eq!(s["pos"].as_array().unwrap().len(), 3);
+            assert_eq!(s["vel"].as_array().unwrap().len(), 3);
+            assert_eq!(s["spin"].as_array().unwrap().len(), 3);
+            assert!(motions.contains(&s["motion"].as_str().unwrap()));
+        }
+    }
+    let fin = doc["final"].as_object().unwrap();
+    assert_eq!(fin.len(), 22);
+    for s in fin.values() {
+        assert!(["stationary", "pocketed"].contains(&s["motion"].as_str().unwrap()));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn json_to_stdout() {
+    let o = snooker(&["simulate", "-q", "--json", "-"]);
+    assert!(o.status.success());
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(doc["events"].is_array());
+}
+
+/// Runs a bad scene; checks exit code 2, a single error line naming the file and key, and that
+/// the requested output was not written.
+fn rejects(tag: &str, scene: &str, key: &str, reason: &str) {
+    let dir = temp_dir(tag);
+    let path = dir.join(format!("{tag}.toml"));
+    std::fs::write(&path, scene).unwrap();
+    let out = dir.join("r.json");
+    let o = snooker(&[
+        "simulate",
+        path.to_str().unwrap(),
+        "--json",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{tag}");
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{tag}: {err}");
+    assert!(
+        err.contains(path.to_str().unwrap()),
+        "{tag}: no file in {err}"
+    );
+    assert!(
+        err.contains(&format!("`{key}`")),
+        "{tag}: no key {key} in {err}"
+    );
+    assert!(err.contains(reason), "{tag}: no reason {reason:?} in {err}");
+    assert!(!Path::new(&out).exists(), "{tag}: output written");
+    assert!(o.stdout.is_empty());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+const BALL: &str = "[[balls]]\nid = \"cue\"\npos = [0.5, 0.5]\n";
+
+#[test]
+fn bad_scenes_are_rejected_with_file_key_and_reason() {
+    rejects(
+        "unknown",
+        "[params]\nmu_slid = 0.2\n",
+        "params.mu_slid",
+        "unknown field",
+    );
+    rejects(
+        "overlap",
+        &format!("{BALL}[[balls]]\nid = \"red\"\npos = [0.52, 0.5]\n"),
+        "balls[1].pos",
+        "overlaps",
+    );
+    rejects(
+        "off",
+        "[[balls]]\nid = \"cue\"\npos = [3.6, 0.5]\n",
+        "balls[0].pos",
+        "off the cloth",
+    );
+    rejects(
+        "miscue",
+        &format!("{BALL}[cue]\nball = \"cue\"\nspeed = 2.0\naim = 0.0\noffset = [0.0, 0.025]\n"),
+        "cue.offset",
+        "miscue",
+    );
+    rejects(
+        "nan",
+        "[[balls]]\nid = \"cue\"\npos = [0.5, nan]\n",
+        "balls[0].pos",
+        "finite",
+    );
+    rejects(
+        "inf",
+        &format!("{BALL}[cue]\nball = \"cue\"\nspeed = inf\naim = 0.0\n"),
+        "cue.speed",
+        "finite",
+    );
+    rejects(
+        "param",
+        &format!("{BALL}[params]\ne_ball = 1.5\n"),
+        "params.e_ball",
+        "[0, 1]",
+    );
+    rejects(
+        "model",
+        &format!("{BALL}[models]\ncushion = \"rubber\"\n"),
+        "models.cushion",
+        "unknown variant",
+    );
+    rejects(
+        "noball",
+        &format!("{BALL}[cue]\nball = \"white\"\nspeed = 1.0\naim = 0.0\n"),
+        "cue.ball",
+        "no ball",
+    );
+    rejects(
+        "layout",
+        "layout = \"nine-ball\"\n",
+        "layout",
+        "unknown layout",
+    );
+    rejects("dup", &format!("{BALL}{BALL}"), "balls[1].id", "used twice");
+}
+
+#[test]
+fn a_missing_file_is_reported() {
+    let o = snooker(&["simulate", "/nonexistent/scene.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert!(err.contains("/nonexistent/scene.toml") && err.contains("cannot read"));
+}
+
+#[test]
+fn bad_arguments_exit_with_2() {
+    assert_eq!(snooker(&["simulate", "--bogus"]).status.code(), Some(2));
+    assert_eq!(snooker(&["frobnicate"]).status.code(), Some(2));
+}

@@ -1,0 +1,159 @@
+//! Every scene in `scenes/` loads, simulates cleanly (the brute-force checks of
+//! `common::check_shot`) and does what its name says.
+
+mod common;
+
+use snooker::scene;
+use snooker_engine::{EventKind, Shot, SimOptions, simulate};
+use std::path::Path;
+
+fn run(name: &str) -> (scene::Scene, Shot) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(format!("{name}.toml"));
+    let sc = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let shot = simulate(&sc.setup, &sc.options).unwrap_or_else(|e| panic!("{name}: {e}"));
+    common::check_shot(&sc.setup, &shot);
+    (sc, shot)
+}
+
+fn cushions_of(shot: &Shot, ball: usize) -> Vec<String> {
+    shot.events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallCushion && e.balls == [ball])
+        .map(|e| e.feature.clone().unwrap())
+        .collect()
+}
+
+#[test]
+fn every_scene_file_simulates_cleanly() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let sc = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+            let shot = simulate(&sc.setup, &SimOptions::default()).unwrap();
+            common::check_shot(&sc.setup, &shot);
+            n += 1;
+        }
+    }
+    assert!(n >= 15, "only {n} scenes");
+}
+
+#[test]
+fn cushion_scenes_hit_the_number_of_cushions_they_are_named_for() {
+    for (name, n) in [("one-cushion", 1), ("two-cushion", 2), ("three-cushion", 3)] {
+        let (_, shot) = run(name);
+        assert_eq!(
+            cushions_of(&shot, 0).len(),
+            n,
+            "{name}: {:?}",
+            cushions_of(&shot, 0)
+        );
+    }
+}
+
+#[test]
+fn screw_comes_back_follow_runs_on_stun_stops_near_the_contact() {
+    let start = |sc: &scene::Scene| sc.setup.balls[0].state.pos.x;
+    let (sc, shot) = run("screw");
+    let end = shot.final_states()[0].pos.x;
+    assert!(
+        end < start(&sc),
+        "screw: cue ball ends at {end}, started at {}",
+        start(&sc)
+    );
+    let (_, shot) = run("follow");
+    let c = shot
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::BallBall)
+        .unwrap()
+        .after[0]
+        .pos
+        .x;
+    assert!(shot.final_states()[0].pos.x > c + 0.1);
+    let (_, shot) = run("stun");
+    let c = shot
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::BallBall)
+        .unwrap()
+        .after[0]
+        .pos
+        .x;
+    let end = shot.final_states()[0].pos.x;
+    assert!((end - c).abs() < 0.2, "stun moved on {:.3} m", end - c);
+}
+
+#[test]
+fn the_cut_is_thirty_degrees() {
+    let (_, shot) = run("cut-30");
+    let e = shot
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::BallBall)
+        .unwrap();
+    let n = (e.before[1].pos - e.before[0].pos).normalize();
+    let v = e.before[0].vel.normalize();
+    let cut = n.dot(&v).acos().to_degrees();
+    assert!((cut - 30.0).abs() < 0.01, "{cut}");
+}
+
+#[test]
+fn table_i_scenes_meet_at_the_measured_speed_and_cut() {
+    let data = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/thesis_oblique_collisions.csv"),
+    )
+    .unwrap();
+    let rows: Vec<Vec<f64>> = data
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("speed_in"))
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 5);
+    for (k, row) in rows.iter().enumerate() {
+        let (_, shot) = run(&format!("table-i-{}", k + 1));
+        let e = shot
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::BallBall)
+            .unwrap();
+        let cue = e.before[0];
+        assert!(
+            (cue.vel.norm() - row[0]).abs() < 1e-9,
+            "speed {}",
+            cue.vel.norm()
+        );
+        assert!(
+            cue.slip(shot.params.ball_radius).norm() < 1e-9,
+            "must arrive rolling"
+        );
+        let n = (e.before[1].pos - cue.pos).normalize();
+        let cut = n.dot(&cue.vel.normalize()).acos().to_degrees();
+        assert!((cut - row[1]).abs() < 1e-3, "cut {cut} vs {}", row[1]);
+    }
+}
+
+#[test]
+fn the_perpendicular_rebound_stays_on_its_line() {
+    let (_, shot) = run("cushion-rebound");
+    assert_eq!(cushions_of(&shot, 0), ["top"]);
+    assert!((shot.final_states()[0].pos.y - 0.889).abs() < 1e-12);
+}
+
+#[test]
+fn the_chapter_7_example_strikes_as_the_thesis_describes() {
+    let (sc, shot) = run("chapter7-example");
+    let (_, cue, strike) = sc.strike.as_ref().unwrap();
+    assert!((cue.aim - 0.515).abs() < 1e-12);
+    // The first contact is with the object ball (thesis fig. 7.20).
+    let first = shot
+        .events
+        .iter()
+        .find(|e| e.kind != EventKind::Transition(snooker_engine::motion::Transition::SlideToRoll))
+        .unwrap();
+    assert_eq!(first.kind, EventKind::BallBall);
+    assert!(strike.squirt.abs() > 0.0);
+}
