@@ -155,7 +155,7 @@ fn simultaneous_impacts_resolve_in_a_fixed_order_and_conserve_momentum() {
     let p = Params::default();
     let r = p.ball_radius;
     let v = Vec3::new(1.0, 0.0, 0.0);
-    let s = setup(
+    let mut s = setup(
         Table::open(),
         vec![
             resting("mid", 0.0, 0.0, &p),
@@ -163,6 +163,11 @@ fn simultaneous_impacts_resolve_in_a_fixed_order_and_conserve_momentum() {
             rolling("right", 0.3, 0.0, -v, &p),
         ],
     );
+    // Frictionless impacts: the cloth takes no momentum during them.
+    s.models = Models {
+        ball_ball: snooker_engine::BallBallModel::Frictionless,
+        cushion: snooker_engine::CushionModel::Frictionless,
+    };
     let shot = run(&s);
     let impacts: Vec<_> = shot
         .events

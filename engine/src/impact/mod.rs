@@ -3,6 +3,8 @@
 
 pub mod ball_ball;
 pub mod cushion;
+pub mod dopri;
+pub mod impulse;
 
 use serde::{Deserialize, Serialize};
 
@@ -31,6 +33,7 @@ pub fn restitution_floor(e: f64, approach: f64) -> f64 {
     }
 }
 pub use cushion::CushionModel;
+pub use impulse::ImpactError;
 
 /// The impact models of a scene.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

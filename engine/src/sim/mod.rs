@@ -105,6 +105,15 @@ pub enum SimError {
         /// The limit, s.
         max_time: f64,
     },
+    /// An impact model failed to converge (a bug: reported rather than passed on).
+    Impact {
+        /// Balls involved.
+        balls: Vec<String>,
+        /// Time, s.
+        t: f64,
+        /// What failed.
+        reason: String,
+    },
     /// A non-finite number appeared (a bug: reported rather than passed on).
     NonFinite {
         /// Ball id.
@@ -130,6 +139,11 @@ impl std::fmt::Display for SimError {
                 f,
                 "balls were still moving after {max_time} s of simulated time \
                  (is there no rolling resistance or sliding friction?)"
+            ),
+            SimError::Impact { balls, t, reason } => write!(
+                f,
+                "internal error: the impact of {} at t = {t} s failed: {reason}",
+                balls.join(" and ")
             ),
             SimError::NonFinite { ball, t } => write!(
                 f,
@@ -426,6 +440,14 @@ impl Sim<'_> {
         Ok(Ending::AtRest)
     }
 
+    fn impact_error(&self, balls: &[usize], err: crate::impact::ImpactError) -> SimError {
+        SimError::Impact {
+            balls: balls.iter().map(|&i| self.tracks[i].id.clone()).collect(),
+            t: self.now,
+            reason: err.0,
+        }
+    }
+
     fn resolve(&mut self, e: &Entry) -> Result<(), SimError> {
         let p = *self.params();
         let table = &self.setup.table;
@@ -438,7 +460,12 @@ impl Sim<'_> {
                     e_ball: crate::impact::restitution_floor(p.e_ball, approach),
                     ..p
                 };
-                let (a2, b2) = self.setup.models.ball_ball.resolve(&a, &b, &pe);
+                let (a2, b2) = self
+                    .setup
+                    .models
+                    .ball_ball
+                    .resolve(&a, &b, &pe)
+                    .map_err(|err| self.impact_error(&[e.a, e.b], err))?;
                 (
                     EventKind::BallBall,
                     vec![e.a, e.b],
@@ -465,7 +492,12 @@ impl Sim<'_> {
                     e_cushion: crate::impact::restitution_floor(p.e_cushion, -s.vel.dot(&normal)),
                     ..p
                 };
-                let s2 = self.setup.models.cushion.resolve(&s, normal, &pe);
+                let s2 = self
+                    .setup
+                    .models
+                    .cushion
+                    .resolve(&s, normal, &pe)
+                    .map_err(|err| self.impact_error(&[e.a], err))?;
                 (
                     EventKind::BallCushion,
                     vec![e.a],

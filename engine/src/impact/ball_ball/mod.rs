@@ -1,8 +1,10 @@
 //! Ball-ball impact models.
 
 pub mod frictionless;
+pub mod mathavan;
 
 use crate::ball::BallState;
+use crate::impact::impulse::ImpactError;
 use crate::params::Params;
 use serde::{Deserialize, Serialize};
 
@@ -11,8 +13,11 @@ use serde::{Deserialize, Serialize};
 #[serde(rename_all = "snake_case")]
 pub enum BallBallModel {
     /// Newton's restitution e along the line of centres; no friction, spins untouched.
-    #[default]
     Frictionless,
+    /// The thesis's frictional 3D impact (§6.1): ball-ball and ball-cloth friction, one ball
+    /// lifting off, energetic restitution.
+    #[default]
+    Mathavan,
 }
 
 impl BallBallModel {
@@ -20,13 +25,20 @@ impl BallBallModel {
     pub fn name(self) -> &'static str {
         match self {
             BallBallModel::Frictionless => "frictionless",
+            BallBallModel::Mathavan => "mathavan",
         }
     }
 
     /// Resolves the impact of `a` on `b` (touching, approaching): the states just after.
-    pub fn resolve(self, a: &BallState, b: &BallState, p: &Params) -> (BallState, BallState) {
+    pub fn resolve(
+        self,
+        a: &BallState,
+        b: &BallState,
+        p: &Params,
+    ) -> Result<(BallState, BallState), ImpactError> {
         match self {
-            BallBallModel::Frictionless => frictionless::resolve(a, b, p),
+            BallBallModel::Frictionless => Ok(frictionless::resolve(a, b, p)),
+            BallBallModel::Mathavan => mathavan::resolve(a, b, p),
         }
     }
 }

@@ -1,0 +1,55 @@
+//! The thesis's frictional ball-cushion impact (thesis §6.2; Mathavan, Jackson and Parkin
+//! 2010): the nose touches the ball at height h (7R/5), so the contact normal rises at theta
+//! (sin theta = (h - R)/R = 2/5) towards the cushion; cushion friction mu_w with a free slip
+//! direction, the cloth's reaction (dP_C = (sin theta + mu_w sin Phi cos theta) dP_I) and
+//! friction mu_s, and energetic restitution e_e on the normal velocity at the nose.
+//! Solved by [`crate::impact::impulse`] with the cushion as an immovable body.
+
+use crate::ball::{BallState, Vec3};
+use crate::impact::impulse::{Body, Contact, ImpactError, Kinematics, Outcome, Sample};
+use crate::motion::ON_CLOTH;
+use crate::params::Params;
+
+/// The contact problem of `ball` hitting a cushion (or jaw) whose plan normal, pointing from
+/// the cushion to the ball, is `normal`.
+pub fn contact(ball: &BallState, normal: Vec3, p: &Params) -> Contact {
+    let sin = p.cushion_sin_theta();
+    let cos = (1.0 - sin * sin).sqrt();
+    // From the ball's centre towards the nose: into the cushion and up.
+    let n = -cos * normal + sin * Vec3::z();
+    Contact {
+        bodies: [
+            Body::ball(ball.pos.z <= p.ball_radius + ON_CLOTH),
+            Body::fixed(),
+        ],
+        normal: n,
+        arm: [n, Vec3::zeros()],
+        mu: p.mu_cushion,
+        mu_cloth: p.mu_slide,
+        e: p.e_cushion,
+    }
+}
+
+/// Solves the impact, optionally recording its progress.
+pub fn solve(
+    ball: &BallState,
+    normal: Vec3,
+    p: &Params,
+    trace: Option<&mut Vec<Sample>>,
+) -> Result<Outcome, ImpactError> {
+    let k = Kinematics {
+        vel: [ball.vel, Vec3::zeros()],
+        spin: [ball.spin, Vec3::zeros()],
+    };
+    contact(ball, normal, p).solve(&k, p.ball_radius, p.ball_mass, trace)
+}
+
+/// State just after the impact.
+pub fn resolve(ball: &BallState, normal: Vec3, p: &Params) -> Result<BallState, ImpactError> {
+    let out = solve(ball, normal, p, None)?;
+    Ok(BallState {
+        vel: out.after.vel[0],
+        spin: out.after.spin[0],
+        ..*ball
+    })
+}

@@ -1,0 +1,839 @@
+//! Frictional 3D impact dynamics in impulse space, shared by the two Mathavan models
+//! (thesis §6.1, §6.2; Mathavan, Jackson and Parkin 2010; Stronge, *Impact Mechanics* 2000).
+//!
+//! Two rigid bodies meet at a primary contact (ball-ball, or ball-cushion with the cushion a
+//! body of zero inverse mass). The normal impulse P at that contact grows monotonically during
+//! the impact and is the independent variable. Forces per unit dP:
+//! - at the primary contact: the normal impulse along n (from body 0 to body 1), and Coulomb
+//!   friction mu against the slip of body 0's contact point relative to body 1's;
+//! - at the cloth under each ball that rests on it: a reaction N that keeps the ball's vertical
+//!   velocity at zero while the other forces push the ball down (a unilateral constraint: the
+//!   ball whose contact is pushed down presses the cloth, the other lifts off, thesis §6.1.2;
+//!   for the cushion this gives dP_C = (sin theta + mu_w sin Phi cos theta) dP_I, eq. 6.28),
+//!   and friction mu_s N against the cloth slip.
+//!
+//! Slip directions are free to change during the impact. Friction is Coulomb's law: against
+//! the slip while there is one; at zero slip the contact holds if the friction needed is at
+//! most mu N, and otherwise creeps out of zero in the one direction its friction leaves
+//! growing. The thesis states "no stick" (§6.1.2.1, §6.2.2.1: friction stops when a slip
+//! reaches zero); taken literally that is ill-posed whenever other forces keep driving the
+//! slip (the friction then flips every instant), and a fixed-step scheme that re-evaluates the
+//! slip direction every step (the thesis's own) converges to this law. Where nothing drives a
+//! stopped slip, as in most snooker impacts, the two agree.
+//!
+//! Restitution is energetic (Stronge): compression ends when the normal relative velocity
+//! vanishes; the impact ends when the work of the normal impulse, W(P) = integral of v_n dP,
+//! reaches (1 - e^2) W(P_c) (thesis eqs. 6.12, 6.38).
+//!
+//! The equations are integrated adaptively ([`super::dopri`]) in units of the approach speed V,
+//! the ball mass M and radius R; every switch (end of compression, a slip stopping, turning or
+//! becoming established, a ball pressing or lifting, the end of the impact) is an event
+//! located on the integrator's continuous extension.
+
+// Small dense linear algebra reads best with explicit indices.
+#![allow(clippy::needless_range_loop)]
+
+use super::dopri::{self, Stop};
+use crate::ball::Vec3;
+
+/// One body of an impact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    /// M / mass (1 for a ball, 0 for a fixed cushion).
+    pub inv_mass: f64,
+    /// M R^2 / moment of inertia (5/2 for a solid ball, 0 for a fixed cushion).
+    pub inv_inertia: f64,
+    /// True when the body rests on the cloth at the start (so the cloth can hold it).
+    pub on_cloth: bool,
+}
+
+impl Body {
+    /// A solid ball of the reference mass and radius.
+    pub fn ball(on_cloth: bool) -> Body {
+        Body {
+            inv_mass: 1.0,
+            inv_inertia: 2.5,
+            on_cloth,
+        }
+    }
+
+    /// An immovable body (the cushion).
+    pub fn fixed() -> Body {
+        Body {
+            inv_mass: 0.0,
+            inv_inertia: 0.0,
+            on_cloth: false,
+        }
+    }
+}
+
+/// The geometry and coefficients of an impact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    /// The two bodies.
+    pub bodies: [Body; 2],
+    /// Unit normal at the primary contact, from body 0 towards body 1.
+    pub normal: Vec3,
+    /// The primary contact point relative to each body's centre, in units of R.
+    pub arm: [Vec3; 2],
+    /// Friction at the primary contact.
+    pub mu: f64,
+    /// Friction at the cloth during the impact.
+    pub mu_cloth: f64,
+    /// Energetic coefficient of restitution.
+    pub e: f64,
+}
+
+/// Velocities of the two bodies (m/s, rad/s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics {
+    /// Centre velocities.
+    pub vel: [Vec3; 2],
+    /// Angular velocities.
+    pub spin: [Vec3; 2],
+}
+
+/// What the impact did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outcome {
+    /// Velocities just after the impact.
+    pub after: Kinematics,
+    /// Total normal impulse, N s.
+    pub impulse: f64,
+    /// Normal impulse at the end of compression, N s.
+    pub compression_impulse: f64,
+    /// Accepted integration steps.
+    pub steps: usize,
+    /// Phases between switches.
+    pub phases: usize,
+}
+
+/// One sample of an impact's progress, for plots of slip against impulse (thesis fig. 6.14).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// Normal impulse so far, N s.
+    pub impulse: f64,
+    /// Slip velocity at the primary contact (body 0 relative to body 1), m/s.
+    pub slip: Vec3,
+    /// Cloth slip of each body, m/s (zero when it does not touch the cloth).
+    pub cloth_slip: [Vec3; 2],
+    /// Normal relative velocity (positive approaching), m/s.
+    pub normal_velocity: f64,
+}
+
+/// An impact that could not be integrated.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImpactError(pub String);
+
+impl std::fmt::Display for ImpactError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "impact could not be resolved: {}", self.0)
+    }
+}
+
+impl std::error::Error for ImpactError {}
+
+/// Relative tolerance of the integration (scaled units). Results are within 1e-6 of the
+/// converged solution over random impacts with frictions up to 0.3 (tests/impact_models.rs).
+pub const TOLERANCE: f64 = 5e-10;
+/// Event functions (velocities in units of V) are located to this.
+const ROOT_TOLERANCE: f64 = 1e-12;
+/// A slip below this many integration tolerances (as a fraction of V) counts as zero: above
+/// the integration's noise and the chatter of a contact about to stick (so a nil slip never
+/// steers friction by its rounding), and far below the results' accuracy (1e-7 V at the
+/// default tolerance).
+const ZERO_SLIP_PER_TOLERANCE: f64 = 100.0;
+/// Safety net: widest zero band (fraction of V) that a crawling or dithering integration may
+/// escalate to. Not reached in any test; it bounds the cost of an unforeseen stiff case.
+const WIDEST_ZERO: f64 = 1e-5;
+/// Steps after which a phase counts as crawling.
+const CRAWL_STEPS: usize = 5000;
+/// Phases after which an impact counts as dithering: the zero band widens at every such count.
+const DITHER_PHASES: usize = 20;
+/// A creeping slip growing faster than this (fraction of V per unit impulse M V) is robust:
+/// its direction can be frozen while it grows out of the zero band.
+const ROBUST_CREEP: f64 = 1e-1;
+/// A slip growing out of zero is followed as a slip once it exceeds this many zero bands.
+const ESTABLISHED_PER_ZERO: f64 = 100.0;
+/// Vertical speed (fraction of V) below which a ball at a support event has landed.
+const LANDED: f64 = 1e-12;
+
+const N: usize = 13;
+/// Events: end of compression, end of restitution, one per frictional contact (the primary
+/// one and the cloth under each body), one per body's support.
+const K: usize = 7;
+
+/// How a frictional contact behaves during a phase.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Friction {
+    /// No friction (zero coefficient, or no normal force).
+    Off,
+    /// Slipping: friction mu N against the slip; the slip's direction when the phase began.
+    Slip(Vec3),
+    /// At zero slip: holding, or creeping out of zero, as Coulomb's law decides at every
+    /// instant ([`Contact::at_zero`]).
+    AtZero,
+    /// Creeping robustly out of zero: friction mu N against this (consistent) direction until
+    /// the slip is established; the direction cannot change in that instant.
+    Starting(Vec3),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Mode {
+    /// The primary contact, then the cloth under body 0 and body 1.
+    friction: [Friction; 3],
+    compressing: bool,
+    w_target: f64,
+    /// Slip (fraction of V) below which a slip counts as zero.
+    zero: f64,
+}
+
+/// All forces per unit dP, besides the primary normal impulse.
+#[derive(Clone, Copy, Debug)]
+struct Forces {
+    /// Friction on body 0 at the primary contact (body 1 gets the opposite).
+    primary: Vec3,
+    /// Cloth friction on each body.
+    cloth: [Vec3; 2],
+    /// Cloth reaction on each body.
+    reaction: [f64; 2],
+}
+
+fn v3(y: &[f64; N], i: usize) -> Vec3 {
+    Vec3::new(y[i], y[i + 1], y[i + 2])
+}
+
+fn put(y: &mut [f64; N], i: usize, v: Vec3) {
+    y[i] = v.x;
+    y[i + 1] = v.y;
+    y[i + 2] = v.z;
+}
+
+fn unit_or(v: Vec3, fallback: Vec3) -> Vec3 {
+    let n = v.norm();
+    if n > 0.0 { v / n } else { fallback }
+}
+
+/// Direction of a slip: its own while it is measurably non-zero (above `zero`), otherwise
+/// `chosen` (the direction the phase began with), so that noise in a nil slip never steers
+/// friction.
+fn slip_direction(s: Vec3, chosen: Vec3, zero: f64) -> Vec3 {
+    let n = s.norm();
+    if n > zero { s / n } else { chosen }
+}
+
+/// Offsets of each body's velocity and spin in the state vector.
+const VEL: [usize; 2] = [0, 6];
+const SPIN: [usize; 2] = [3, 9];
+const WORK: usize = 12;
+
+/// Solves the small dense system `a x = b` (n <= 6) by Gaussian elimination with partial
+/// pivoting; `None` if it is singular.
+fn solve_dense(a: &mut [[f64; 6]; 6], b: &mut [f64; 6], n: usize) -> Option<()> {
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() < 1e-14 {
+            return None;
+        }
+        a.swap(c, p);
+        b.swap(c, p);
+        for r in c + 1..n {
+            let f = a[r][c] / a[c][c];
+            for k in c..n {
+                a[r][k] -= f * a[c][k];
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    for c in (0..n).rev() {
+        let s: f64 = (c + 1..n).map(|k| a[c][k] * b[k]).sum();
+        b[c] = (b[c] - s) / a[c][c];
+    }
+    Some(())
+}
+
+/// Velocities at the contacts in one state, computed once per evaluation.
+#[derive(Clone, Copy, Debug)]
+struct Local {
+    /// Normal relative velocity at the primary contact (positive approaching).
+    vn: f64,
+    /// Slips of the three frictional contacts (primary, cloth under body 0, body 1).
+    slip: [Vec3; 3],
+}
+
+impl Contact {
+    /// Velocity of body 0's contact point relative to body 1's.
+    fn primary_velocity(&self, y: &[f64; N]) -> Vec3 {
+        let p = |i: usize| v3(y, VEL[i]) + v3(y, SPIN[i]).cross(&self.arm[i]);
+        p(0) - p(1)
+    }
+
+    /// Slip of body `i`'s cloth contact point (horizontal): v + w x (-z) in units of R.
+    fn cloth_velocity(&self, y: &[f64; N], i: usize) -> Vec3 {
+        let (v, w) = (VEL[i], SPIN[i]);
+        Vec3::new(y[v] - y[w + 1], y[v + 1] + y[w], 0.0)
+    }
+
+    fn local(&self, y: &[f64; N]) -> Local {
+        let u = self.primary_velocity(y);
+        let vn = u.dot(&self.normal);
+        Local {
+            vn,
+            slip: [
+                u - vn * self.normal,
+                self.cloth_velocity(y, 0),
+                self.cloth_velocity(y, 1),
+            ],
+        }
+    }
+
+    /// Two unit vectors spanning contact `k`'s tangent plane.
+    fn tangents(&self, k: usize) -> [Vec3; 2] {
+        if k == 0 {
+            let t = unit_or(
+                self.normal.cross(&Vec3::z()),
+                self.normal.cross(&Vec3::x()).normalize(),
+            );
+            [t, self.normal.cross(&t)]
+        } else {
+            [Vec3::x(), Vec3::y()]
+        }
+    }
+
+    fn coefficient(&self, k: usize) -> f64 {
+        if k == 0 { self.mu } else { self.mu_cloth }
+    }
+
+    /// Vertical component of the non-cloth force on each body (per unit dP).
+    fn vertical_forces(&self, fp: Vec3) -> [f64; 2] {
+        [fp.z - self.normal.z, self.normal.z - fp.z]
+    }
+
+    /// The cloth's reaction on body `i` (per unit dP) when the other vertical forces on it
+    /// are `fz`: it holds a ball that is down on the cloth against forces pushing it down, and
+    /// lets it rise freely.
+    fn reaction(&self, y: &[f64; N], i: usize, fz: f64) -> f64 {
+        if self.bodies[i].on_cloth && y[VEL[i] + 2] <= 0.0 {
+            (-fz).max(0.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// Forces with the holding frictions of sticking contacts given by `held`.
+    fn forces_with(&self, y: &[f64; N], loc: &Local, mode: &Mode, held: &[Vec3; 3]) -> Forces {
+        let primary = match mode.friction[0] {
+            Friction::Off => Vec3::zeros(),
+            Friction::Slip(r) => -self.mu * slip_direction(loc.slip[0], r, mode.zero),
+            Friction::Starting(r) => -self.mu * r,
+            Friction::AtZero => held[0],
+        };
+        let fz = self.vertical_forces(primary);
+        let reaction = [self.reaction(y, 0, fz[0]), self.reaction(y, 1, fz[1])];
+        let cloth = [0, 1].map(|i| match mode.friction[1 + i] {
+            Friction::Off => Vec3::zeros(),
+            Friction::Slip(r) => {
+                -self.mu_cloth * reaction[i] * slip_direction(loc.slip[1 + i], r, mode.zero)
+            }
+            Friction::Starting(r) => -self.mu_cloth * reaction[i] * r,
+            Friction::AtZero => held[1 + i],
+        });
+        Forces {
+            primary,
+            cloth,
+            reaction,
+        }
+    }
+
+    fn derivatives(&self, loc: &Local, f: &Forces) -> [f64; N] {
+        let mut dy = [0.0; N];
+        let torque_p = [self.arm[0].cross(&f.primary), f.primary.cross(&self.arm[1])];
+        let sign = [1.0, -1.0];
+        for i in 0..2 {
+            let b = &self.bodies[i];
+            if b.inv_mass == 0.0 && b.inv_inertia == 0.0 {
+                continue;
+            }
+            let c = f.cloth[i];
+            let mut force = sign[i] * (f.primary - self.normal) + c;
+            force.z += f.reaction[i];
+            // The cloth's friction acts at the lowest point: (-z) x c = (c_y, -c_x, 0).
+            let torque = torque_p[i] + Vec3::new(c.y, -c.x, 0.0);
+            put(&mut dy, VEL[i], b.inv_mass * force);
+            put(&mut dy, SPIN[i], b.inv_inertia * torque);
+        }
+        dy[WORK] = loc.vn;
+        dy
+    }
+
+    /// Rate of change of contact `k`'s slip, given the state's rates `dy`.
+    fn slip_rate(&self, dy: &[f64; N], k: usize) -> Vec3 {
+        if k == 0 {
+            let dp = |i: usize| v3(dy, VEL[i]) + v3(dy, SPIN[i]).cross(&self.arm[i]);
+            let du = dp(0) - dp(1);
+            du - du.dot(&self.normal) * self.normal
+        } else {
+            self.cloth_velocity(dy, k - 1)
+        }
+    }
+
+    /// Slip rates (in each contact's tangent basis) of the contacts in `which`, when the
+    /// contacts at zero slip exert the frictions `held`.
+    fn rates(
+        &self,
+        y: &[f64; N],
+        loc: &Local,
+        mode: &Mode,
+        held: &[Vec3; 3],
+        which: &[usize],
+    ) -> [f64; 6] {
+        let dy = self.derivatives(loc, &self.forces_with(y, loc, mode, held));
+        let mut r = [0.0; 6];
+        for (j, &k) in which.iter().enumerate() {
+            let d = self.slip_rate(&dy, k);
+            let t = self.tangents(k);
+            r[2 * j] = d.dot(&t[0]);
+            r[2 * j + 1] = d.dot(&t[1]);
+        }
+        r
+    }
+
+    /// Sets in `held` the frictions that keep the slip rates of the contacts in `which` at
+    /// zero, the other frictions in `held` fixed. The rates are affine in these frictions, so
+    /// this is one small linear solve.
+    fn hold(&self, y: &[f64; N], loc: &Local, mode: &Mode, held: &mut [Vec3; 3], which: &[usize]) {
+        let n = 2 * which.len();
+        for &k in which {
+            held[k] = Vec3::zeros();
+        }
+        let base = self.rates(y, loc, mode, held, which);
+        let mut a = [[0.0; 6]; 6];
+        for col in 0..n {
+            let (j, c) = (col / 2, col % 2);
+            let mut probe = *held;
+            probe[which[j]] = self.tangents(which[j])[c];
+            let r = self.rates(y, loc, mode, &probe, which);
+            for row in 0..n {
+                a[row][col] = r[row] - base[row];
+            }
+        }
+        let mut b = [0.0; 6];
+        for row in 0..n {
+            b[row] = -base[row];
+        }
+        if solve_dense(&mut a, &mut b, n).is_some() {
+            for (j, &k) in which.iter().enumerate() {
+                let t = self.tangents(k);
+                held[k] = b[2 * j] * t[0] + b[2 * j + 1] * t[1];
+            }
+        }
+    }
+
+    /// How contact `k`, at zero slip and unable to hold, creeps out of zero (the other
+    /// frictions in `held` fixed). Its slip rate is affine in its friction F: rate = d + B F.
+    /// With Coulomb friction F = -c s (c = mu N) a slip growing as lambda s needs
+    /// (lambda I + c B) s = d with |s| = 1 and lambda >= 0; |(lambda I + c B)^-1 d| falls with
+    /// lambda, so lambda is found by bisection (lambda = 0, the edge of holding, gives the
+    /// direction opposite to the holding force, so friction is continuous there). Returns the
+    /// friction, the direction and lambda.
+    fn creep(
+        &self,
+        y: &[f64; N],
+        loc: &Local,
+        mode: &Mode,
+        held: &[Vec3; 3],
+        k: usize,
+    ) -> (Vec3, Vec3, f64) {
+        let t = self.tangents(k);
+        let mut probe = *held;
+        probe[k] = Vec3::zeros();
+        let d6 = self.rates(y, loc, mode, &probe, &[k]);
+        let d = [d6[0], d6[1]];
+        let cap =
+            self.coefficient(k) * self.normal_force(&self.forces_with(y, loc, mode, &probe), k);
+        let mut b = [[0.0; 2]; 2];
+        for c in 0..2 {
+            probe[k] = t[c];
+            let r = self.rates(y, loc, mode, &probe, &[k]);
+            b[0][c] = r[0] - d[0];
+            b[1][c] = r[1] - d[1];
+        }
+        let s_of = |lambda: f64| {
+            let (a, bb, c, dd) = (
+                lambda + cap * b[0][0],
+                cap * b[0][1],
+                cap * b[1][0],
+                lambda + cap * b[1][1],
+            );
+            let det = a * dd - bb * c;
+            [(dd * d[0] - bb * d[1]) / det, (a * d[1] - c * d[0]) / det]
+        };
+        let norm = |v: [f64; 2]| (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let mut lambda = 0.0;
+        if norm(s_of(0.0)) > 1.0 {
+            let (mut lo, mut hi) = (0.0, norm(d) + cap * (b[0][0].abs() + b[1][1].abs()) + 1.0);
+            for _ in 0..52 {
+                let mid = 0.5 * (lo + hi);
+                if norm(s_of(mid)) > 1.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            lambda = 0.5 * (lo + hi);
+        }
+        let s = s_of(lambda);
+        let dir = unit_or(s[0] * t[0] + s[1] * t[1], t[0]);
+        (-cap * dir, dir, lambda)
+    }
+
+    /// Frictions of the contacts at zero slip, by Coulomb's law taken jointly: those that can
+    /// hold do (one linear solve for all of them), the others creep at mu N (one at a time,
+    /// each release changing what the rest need). Also returns, per contact, the creeping
+    /// direction and its lambda.
+    fn at_zero(
+        &self,
+        y: &[f64; N],
+        loc: &Local,
+        mode: &Mode,
+    ) -> ([Vec3; 3], [Option<(Vec3, f64)>; 3]) {
+        let mut held = [Vec3::zeros(); 3];
+        let mut creeping: [Option<(Vec3, f64)>; 3] = [None; 3];
+        for _ in 0..3 {
+            let mut which_at = [0usize; 3];
+            let mut n = 0;
+            for k in 0..3 {
+                if mode.friction[k] == Friction::AtZero && creeping[k].is_none() {
+                    which_at[n] = k;
+                    n += 1;
+                }
+            }
+            if n == 0 {
+                break;
+            }
+            self.hold(y, loc, mode, &mut held, &which_at[..n]);
+            let f = self.forces_with(y, loc, mode, &held);
+            let excess = |k: usize| held[k].norm() - self.coefficient(k) * self.normal_force(&f, k);
+            let worst = which_at[..n]
+                .iter()
+                .copied()
+                .filter(|&k| excess(k) > 0.0)
+                .max_by(|&a, &b| excess(a).total_cmp(&excess(b)));
+            let Some(k) = worst else { break };
+            let (force, dir, lambda) = self.creep(y, loc, mode, &held, k);
+            held[k] = force;
+            creeping[k] = Some((dir, lambda));
+        }
+        (held, creeping)
+    }
+
+    /// All forces under `mode` (contacts at zero slip by [`Contact::at_zero`]).
+    fn forces(&self, y: &[f64; N], loc: &Local, mode: &Mode) -> Forces {
+        if !mode.friction.contains(&Friction::AtZero) {
+            return self.forces_with(y, loc, mode, &[Vec3::zeros(); 3]);
+        }
+        let (held, _) = self.at_zero(y, loc, mode);
+        self.forces_with(y, loc, mode, &held)
+    }
+
+    /// Normal force (per unit dP) at contact `k`.
+    fn normal_force(&self, f: &Forces, k: usize) -> f64 {
+        if k == 0 { 1.0 } else { f.reaction[k - 1] }
+    }
+
+    fn rhs(&self, y: &[f64; N], mode: &Mode) -> [f64; N] {
+        let loc = self.local(y);
+        self.derivatives(&loc, &self.forces(y, &loc, mode))
+    }
+
+    /// The event functions at `y`. Forces are computed only as far as the events need them:
+    /// none for compression, restitution and slips; the primary friction for the supports.
+    fn events(&self, y: &[f64; N], mode: &Mode) -> [f64; K] {
+        let loc = self.local(y);
+        let mut g = [0.0; K];
+        if mode.compressing {
+            g[0] = loc.vn;
+        } else {
+            g[1] = y[WORK] - mode.w_target;
+        }
+        for k in 0..3 {
+            g[2 + k] = match mode.friction[k] {
+                Friction::Off => 0.0,
+                Friction::Slip(r) => {
+                    // Changes sign when the slip turns through 90 degrees, and drops to exactly
+                    // zero when the slip comes down to zero; a slip growing out of zero arms it
+                    // without a sign change.
+                    let s = loc.slip[k];
+                    if s.norm() > 2.0 * mode.zero {
+                        s.dot(&r)
+                    } else {
+                        0.0
+                    }
+                }
+                // A slip creeping out of zero is established.
+                Friction::AtZero | Friction::Starting(_) => {
+                    loc.slip[k].norm() - ESTABLISHED_PER_ZERO * mode.zero
+                }
+            };
+        }
+        let primary = if mode.friction[0] == Friction::AtZero {
+            self.forces(y, &loc, mode).primary
+        } else {
+            self.forces_with(y, &loc, mode, &[Vec3::zeros(); 3]).primary
+        };
+        let fz = self.vertical_forces(primary);
+        for i in 0..2 {
+            if self.bodies[i].on_cloth {
+                // Where the cloth starts or stops holding the ball: the vertical force changes
+                // sign (ball down) or the ball comes back down (ball up).
+                let vz = y[VEL[i] + 2];
+                g[5 + i] = if vz > 0.0 { vz } else { fz[i] };
+            }
+        }
+        g
+    }
+
+    /// The mode at state `y`: a contact slips if its slip is measurable, otherwise it is at
+    /// zero (holding or creeping, decided continuously), or has no friction at all.
+    fn mode_at(&self, y: &[f64; N], compressing: bool, w_target: f64, zero: f64) -> Mode {
+        let loc = self.local(y);
+        let mut mode = Mode {
+            friction: [Friction::Off; 3],
+            compressing,
+            w_target,
+            zero,
+        };
+        for k in 0..3 {
+            let on_cloth = k == 0 || self.bodies[k - 1].on_cloth;
+            if self.coefficient(k) <= 0.0 || !on_cloth {
+                continue;
+            }
+            let s = loc.slip[k];
+            mode.friction[k] = if s.norm() > 2.0 * zero {
+                Friction::Slip(s.normalize())
+            } else {
+                Friction::AtZero
+            };
+        }
+        // A cloth contact under a ball that is not pressed down has no friction at all.
+        let f = self.forces(y, &loc, &mode);
+        for i in 0..2 {
+            if f.reaction[i] <= 0.0 {
+                mode.friction[1 + i] = Friction::Off;
+            }
+        }
+        // A contact creeping out of zero fast (its slip growing at more than ROBUST_CREEP per
+        // unit impulse) keeps its direction until established.
+        let (_, creeping) = self.at_zero(y, &loc, &mode);
+        for k in 0..3 {
+            if let Some((dir, _)) = creeping[k].filter(|c| c.1 > ROBUST_CREEP) {
+                mode.friction[k] = Friction::Starting(dir);
+            }
+        }
+        mode
+    }
+
+    /// Resolves the impact of bodies with velocities `k` (dimensional), radius `radius` and
+    /// reference mass `mass`, to the default [`TOLERANCE`]; `trace` receives samples of its
+    /// progress if given.
+    pub fn solve(
+        &self,
+        k: &Kinematics,
+        radius: f64,
+        mass: f64,
+        trace: Option<&mut Vec<Sample>>,
+    ) -> Result<Outcome, ImpactError> {
+        self.solve_to(k, radius, mass, TOLERANCE, trace)
+    }
+
+    /// The thesis's own scheme, for comparison (thesis §6.1.4.2, §6.2.4): forward Euler in P
+    /// with `steps` equal increments of the frictionless impulse, friction against the slip of
+    /// the step's start, compression and restitution work by the trapezoidal rule (eq. 6.16).
+    /// First order: its error falls as 1/steps.
+    pub fn euler(
+        &self,
+        k: &Kinematics,
+        radius: f64,
+        steps: usize,
+    ) -> Result<Kinematics, ImpactError> {
+        let (mut y, v_scale) = self.scaled(k, radius)?;
+        let inv_sum: f64 = self.bodies.iter().map(|b| b.inv_mass).sum();
+        let dp = (1.0 + self.e) / inv_sum.max(1e-12) / steps as f64;
+        let (mut compressing, mut target) = (true, 0.0);
+        for _ in 0..100 * steps {
+            let mut mode = Mode {
+                friction: [Friction::Off; 3],
+                compressing,
+                w_target: target,
+                zero: 0.0,
+            };
+            let loc = self.local(&y);
+            for kk in 0..3 {
+                let s = loc.slip[kk];
+                if self.coefficient(kk) > 0.0 && s.norm() > 0.0 {
+                    mode.friction[kk] = Friction::Slip(s.normalize());
+                }
+            }
+            let vn0 = loc.vn;
+            let dy = self.derivatives(
+                &loc,
+                &self.forces_with(&y, &loc, &mode, &[Vec3::zeros(); 3]),
+            );
+            for (v, d) in y.iter_mut().zip(dy) {
+                *v += dp * d;
+            }
+            let vn1 = self.primary_velocity(&y).dot(&self.normal);
+            y[WORK] += dp * (0.5 * (vn0 + vn1) - vn0);
+            if compressing && vn1 <= 0.0 {
+                compressing = false;
+                target = (1.0 - self.e * self.e) * y[WORK];
+            }
+            if !compressing && y[WORK] <= target {
+                return Ok(Kinematics {
+                    vel: [0, 1].map(|i| v3(&y, VEL[i]) * v_scale),
+                    spin: [0, 1].map(|i| v3(&y, SPIN[i]) * v_scale / radius),
+                });
+            }
+        }
+        Err(ImpactError("the Euler scheme did not finish".into()))
+    }
+
+    /// The state vector in scaled units, and the velocity scale (the approach speed).
+    fn scaled(&self, k: &Kinematics, radius: f64) -> Result<([f64; N], f64), ImpactError> {
+        let u0 = (k.vel[0] + k.spin[0].cross(&(radius * self.arm[0])))
+            - (k.vel[1] + k.spin[1].cross(&(radius * self.arm[1])));
+        let approach = u0.dot(&self.normal);
+        if !(approach > 0.0 && approach.is_finite()) {
+            return Err(ImpactError(format!(
+                "the bodies are not approaching (normal speed {approach} m/s)"
+            )));
+        }
+        let mut y = [0.0; N];
+        for i in 0..2 {
+            put(&mut y, VEL[i], k.vel[i] / approach);
+            put(&mut y, SPIN[i], k.spin[i] * radius / approach);
+        }
+        Ok((y, approach))
+    }
+
+    /// [`Contact::solve`] to a given tolerance (relative, in scaled units).
+    pub fn solve_to(
+        &self,
+        k: &Kinematics,
+        radius: f64,
+        mass: f64,
+        tol: f64,
+        mut trace: Option<&mut Vec<Sample>>,
+    ) -> Result<Outcome, ImpactError> {
+        if !(0.0..).contains(&self.e) || !self.e.is_finite() {
+            return Err(ImpactError(format!("restitution {} out of range", self.e)));
+        }
+        // Scaled units: velocities / V, spins * R / V, impulse / (M V), work / (M V^2).
+        let (mut y, v_scale) = self.scaled(k, radius)?;
+        let record = |trace: &mut Option<&mut Vec<Sample>>, p: f64, y: &[f64; N]| {
+            if let Some(t) = trace.as_deref_mut() {
+                let loc = self.local(y);
+                t.push(Sample {
+                    impulse: p * mass * v_scale,
+                    slip: loc.slip[0] * v_scale,
+                    cloth_slip: [0, 1].map(|i| {
+                        if self.bodies[i].on_cloth {
+                            self.cloth_velocity(y, i) * v_scale
+                        } else {
+                            Vec3::zeros()
+                        }
+                    }),
+                    normal_velocity: loc.vn * v_scale,
+                });
+            }
+        };
+        record(&mut trace, 0.0, &y);
+        let inv_sum: f64 = self.bodies.iter().map(|b| b.inv_mass).sum();
+        // About (1 + e) / (1/m0 + 1/m1) in scaled units: the frictionless impulse.
+        let p_guess = (1.0 + self.e) / inv_sum.max(1e-12);
+        let mut h = p_guess / 8.0;
+        let (mut p, mut steps, mut phases) = (0.0, 0, 0);
+        let (mut compressing, mut w_target) = (true, 0.0);
+        let mut zero = ZERO_SLIP_PER_TOLERANCE * tol;
+        let mut p_c = 0.0;
+        loop {
+            phases += 1;
+            if phases > 200 {
+                return Err(ImpactError("more than 200 phases".into()));
+            }
+            if phases % DITHER_PHASES == 0 {
+                zero = (10.0 * zero).min(WIDEST_ZERO);
+            }
+            let mode = self.mode_at(&y, compressing, w_target, zero);
+            let f = |y: &[f64; N]| self.rhs(y, &mode);
+            let g = |y: &[f64; N]| self.events(y, &mode);
+            let ph = dopri::integrate(
+                &f,
+                &g,
+                p,
+                y,
+                h,
+                tol,
+                ROOT_TOLERANCE,
+                CRAWL_STEPS,
+                |x, yy| record(&mut trace, x, yy),
+            );
+            steps += ph.steps;
+            if ph.x > 1e3 * p_guess.max(1.0) {
+                return Err(ImpactError("the impulse grew without bound".into()));
+            }
+            let Stop::Event(ev) = ph.stop else {
+                // Crawling: a slip hovers at the edge of sticking (friction capacity and drive
+                // in balance), where its direction is stiff at tiny slips. Whether it sticks
+                // or creeps changes nothing measurable; widen the zero band and go on.
+                if zero >= WIDEST_ZERO || ph.x <= p {
+                    return Err(ImpactError("the integration did not converge".into()));
+                }
+                zero = (10.0 * zero).min(WIDEST_ZERO);
+                p = ph.x;
+                y = ph.y;
+                h = ph.h;
+                continue;
+            };
+            p = ph.x;
+            y = ph.y;
+            h = ph.h.max(1e-9 * p_guess);
+            match ev {
+                0 => {
+                    compressing = false;
+                    p_c = p;
+                    let w_c = y[WORK];
+                    w_target = (1.0 - self.e * self.e) * w_c;
+                    if self.e == 0.0 {
+                        break;
+                    }
+                }
+                1 => break,
+                2..=4 => {
+                    // A slip turned, stopped or restarted: the next phase's mode says how.
+                }
+                _ => {
+                    // Pressing or lifting changed. A ball coming back down within the impact
+                    // (its vertical speed at the root is zero to the root tolerance) lands:
+                    // the cloth holds it from here.
+                    for i in 0..2 {
+                        if self.bodies[i].on_cloth && y[VEL[i] + 2] <= LANDED {
+                            y[VEL[i] + 2] = 0.0;
+                        }
+                    }
+                }
+            }
+        }
+        let after = Kinematics {
+            vel: [0, 1].map(|i| v3(&y, VEL[i]) * v_scale),
+            spin: [0, 1].map(|i| v3(&y, SPIN[i]) * v_scale / radius),
+        };
+        Ok(Outcome {
+            after,
+            impulse: p * mass * v_scale,
+            compression_impulse: p_c * mass * v_scale,
+            steps,
+            phases,
+        })
+    }
+}
