@@ -2,6 +2,7 @@
 //! reduced to records and compared against the derived tolerances.
 
 use crate::compare::{Comparison, Scope, compare};
+use crate::ensemble::{HALF_WIDTH, HEADING_STEP, Stat, StatRow, stats, summarise, turned};
 use crate::rapier_run::{self, RapierRun};
 use crate::rapier_world::{ImpactFriction, WorldConfig};
 use crate::record::Record;
@@ -74,6 +75,9 @@ pub struct RunReport {
     pub models: ImpactModels,
     /// What happened.
     pub outcome: Outcome,
+    /// For a chaotic scene: outcome statistics of rapier's shot against an ensemble of ours
+    /// (measured, no verdict: see [`crate::ensemble`]).
+    pub statistics: Vec<StatRow>,
 }
 
 impl RunReport {
@@ -168,6 +172,7 @@ pub fn check(spec: &SceneSpec, models: ImpactModels, dt: f64) -> RunReport {
         scene: spec.name.clone(),
         models,
         outcome,
+        statistics: Vec::new(),
     };
     let cfg = world_config(models, dt);
     let start = Instant::now();
@@ -187,14 +192,48 @@ pub fn check(spec: &SceneSpec, models: ImpactModels, dt: f64) -> RunReport {
         params: p,
     };
     let tol = allowances(&ours, &budget);
-    report(Outcome::Compared {
-        comparison: compare(&ours, &rapier.record, &tol, &scope(&spec.setup, &ours)),
-        sink: rapier.sink,
-        dt,
-        steps: rapier.steps,
-        rapier_finished: rapier.finished,
-        rapier_seconds: seconds,
-    })
+    let scope = scope(&spec.setup, &ours);
+    let statistics = if scope.impacts.is_some() {
+        ensemble_statistics(spec, models, &rapier.record, 2.0 * dt)
+    } else {
+        Vec::new()
+    };
+    RunReport {
+        statistics,
+        ..report(Outcome::Compared {
+            comparison: compare(&ours, &rapier.record, &tol, &scope),
+            sink: rapier.sink,
+            dt,
+            steps: rapier.steps,
+            rapier_finished: rapier.finished,
+            rapier_seconds: seconds,
+        })
+    }
+}
+
+/// rapier's outcome statistics against those of an ensemble of our engine's shots.
+fn ensemble_statistics(
+    spec: &SceneSpec,
+    models: ImpactModels,
+    rapier: &Record,
+    window: f64,
+) -> Vec<StatRow> {
+    let Ok(m) = models.models() else {
+        return Vec::new();
+    };
+    let setup = Setup {
+        models: m,
+        ..spec.setup.clone()
+    };
+    let members: Vec<Vec<Stat>> = (-HALF_WIDTH..=HALF_WIDTH)
+        .filter_map(|k| {
+            let s = turned(&setup, k as f64 * HEADING_STEP);
+            let shot = simulate(&s, &spec.options).ok()?;
+            let rec = Record::from_shot(&shot).normalised(window, RESTING_APPROACH);
+            Some(stats(&s, &rec))
+        })
+        .collect();
+    summarise(&members, &stats(&setup, rapier))
 }
 
 /// The runs of a scene: the frictionless limit, and with friction when the scene has impacts.

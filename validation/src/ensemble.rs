@@ -62,3 +62,83 @@ pub fn stats(setup: &Setup, rec: &Record) -> Vec<Stat> {
         },
     ]
 }
+
+/// Angle by which the cue ball's heading is turned between members of the ensemble, rad
+/// (0.0057 degrees: far below a player's aim).
+pub const HEADING_STEP: f64 = 1e-4;
+
+/// Members of the ensemble on each side of the shot as given.
+pub const HALF_WIDTH: i32 = 8;
+
+/// The shot with the first moving ball's velocity turned by `angle` about the vertical.
+pub fn turned(setup: &Setup, angle: f64) -> Setup {
+    let mut s = setup.clone();
+    if let Some(b) = s.balls.iter_mut().find(|b| b.state.vel.xy().norm() > 0.0) {
+        let v = b.state.vel;
+        let (sin, cos) = angle.sin_cos();
+        b.state.vel = Vec3::new(v.x * cos - v.y * sin, v.x * sin + v.y * cos, v.z);
+    }
+    s
+}
+
+/// One statistic of rapier's shot against our engine's ensemble.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct StatRow {
+    /// Name.
+    pub name: &'static str,
+    /// Mean over our ensemble.
+    pub ours_mean: f64,
+    /// Standard deviation over our ensemble.
+    pub ours_sd: f64,
+    /// Smallest value in our ensemble.
+    pub ours_min: f64,
+    /// Largest value in our ensemble.
+    pub ours_max: f64,
+    /// rapier's value for the shot as given.
+    pub rapier: f64,
+}
+
+/// Summarises our ensemble's statistics (one list per member) against rapier's.
+pub fn summarise(ours: &[Vec<Stat>], rapier: &[Stat]) -> Vec<StatRow> {
+    rapier
+        .iter()
+        .enumerate()
+        .map(|(k, r)| {
+            let xs: Vec<f64> = ours.iter().map(|m| m[k].value).collect();
+            let n = xs.len().max(1) as f64;
+            let mean = xs.iter().sum::<f64>() / n;
+            let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+            StatRow {
+                name: r.name,
+                ours_mean: mean,
+                ours_sd: var.sqrt(),
+                ours_min: xs.iter().copied().fold(f64::INFINITY, f64::min),
+                ours_max: xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                rapier: r.value,
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn summary_of_a_constant_ensemble() {
+        let m = vec![Stat {
+            name: "x",
+            value: 2.0,
+        }];
+        let rows = summarise(
+            &[m.clone(), m.clone()],
+            &[Stat {
+                name: "x",
+                value: 3.0,
+            }],
+        );
+        assert_eq!(rows[0].ours_mean, 2.0);
+        assert_eq!(rows[0].ours_sd, 0.0);
+        assert_eq!(rows[0].rapier, 3.0);
+    }
+}

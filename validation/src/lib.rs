@@ -8,11 +8,14 @@
 //! ([`tolerance`]). [`crosscheck`] runs one scene, [`scenes`] lists the scene set.
 
 pub mod compare;
+pub mod convergence;
 pub mod crosscheck;
 pub mod ensemble;
+pub mod nose;
 pub mod rapier_run;
 pub mod rapier_world;
 pub mod record;
+pub mod report;
 pub mod scenes;
 pub mod shapes;
 pub mod table_laws;
