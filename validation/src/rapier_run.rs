@@ -26,7 +26,7 @@ const SETTLE_TIME: f64 = 1.0;
 pub struct RapierRun {
     /// What happened.
     pub record: Record,
-    /// Depth the resting balls sank into the cloth, m.
+    /// Largest depth a ball sank into the cloth during the run, m.
     pub sink: f64,
     /// Steps taken.
     pub steps: usize,
@@ -53,10 +53,15 @@ fn at_rest(k: &Kinematics, setup: &Setup, dt: f64) -> bool {
         && k.spin.norm() * p.ball_radius <= v.max(p.sidespin_decel * dt * p.ball_radius)
 }
 
-/// Horizontal slip of the cloth contact point of a ball that sank `sink` into the cloth: rapier
-/// puts the contact point at mid-depth, R - sink/2 below the centre.
-fn slip(k: &Kinematics, radius: f64, sink: f64) -> f64 {
-    let r = Vec3::new(0.0, 0.0, -(radius - 0.5 * sink));
+/// Depth a ball on the cloth has sunk into it, m.
+fn depth(k: &Kinematics, radius: f64) -> f64 {
+    (radius - k.pos.z).max(0.0)
+}
+
+/// Horizontal slip of the cloth contact point of a ball: rapier puts the contact point at
+/// mid-depth, R - depth/2 below the centre.
+fn slip(k: &Kinematics, radius: f64) -> f64 {
+    let r = Vec3::new(0.0, 0.0, -(radius - 0.5 * depth(k, radius)));
     let u = k.vel + k.spin.cross(&r);
     Vec3::new(u.x, u.y, 0.0).norm()
 }
@@ -169,10 +174,10 @@ impl Runner<'_> {
         let dt = self.dt();
         let mut current: Vec<Contact> = Vec::new();
         for touch in self.world.touches() {
-            if let Some(c) = self.contact_of(touch.ball, touch.other, before) {
-                if !current.contains(&c) {
-                    current.push(c);
-                }
+            if let Some(c) = self.contact_of(touch.ball, touch.other, before)
+                && !current.contains(&c)
+            {
+                current.push(c);
             }
         }
         let mut open = Vec::new();
@@ -202,7 +207,7 @@ impl Runner<'_> {
     /// Pots: a ball overlapping a pocket's sensor leaves play.
     fn record_pots(&mut self, t0: f64, before: &[Kinematics]) {
         let dt = self.dt();
-        for i in 0..self.world.len() {
+        for (i, b) in before.iter().enumerate() {
             if !self.world.in_play(i) {
                 continue;
             }
@@ -211,11 +216,11 @@ impl Runner<'_> {
             };
             let pk = &self.setup.table.pockets[k];
             let plan = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
-            let d = plan(before[i].pos - pk.centre);
+            let d = plan(b.pos - pk.centre);
             let gap = d.norm() - pk.radius;
-            let speed = -plan(before[i].vel).dot(&d.normalize());
+            let speed = -plan(b.vel).dot(&d.normalize());
             let now = self.world.kinematics(i);
-            let approach = plan(before[i].vel).norm();
+            let approach = plan(b.vel).norm();
             self.impacts.push(Impact {
                 t: closing_time(t0, gap, speed, dt),
                 contact: Contact::Pocket(i, pk.name.clone()),
@@ -244,7 +249,8 @@ impl Runner<'_> {
             if !self.world.in_play(i) {
                 continue;
             }
-            let u = slip(k, p.ball_radius, self.sink);
+            let u = slip(k, p.ball_radius);
+            self.sink = self.sink.max(depth(k, p.ball_radius));
             let track = &mut self.tracks[i];
             let [older, last] = track.slips;
             track.slips = [last, u];
@@ -349,7 +355,7 @@ pub fn run(setup: &Setup, cfg: &WorldConfig, max_time: f64) -> RapierRun {
             finals,
             duration: r.world.time(),
         },
-        sink,
+        sink: r.sink,
         steps,
         finished,
     }

@@ -64,6 +64,24 @@ pub enum ImpactFriction {
     On,
 }
 
+/// Vertical speed below which a ball has settled into the cloth, m/s (within a nanometre of
+/// rest for rapier's contact time constants of tens of milliseconds).
+const SETTLED_SPEED: f64 = 1e-8;
+
+/// Time for a resting ball to settle into rapier's soft cloth: ten time constants of the slow
+/// mode of the contact's spring-damper, 2 zeta / omega when overdamped (zeta > 1), else
+/// 1 / (zeta omega), s.
+fn settle_time(cfg: &WorldConfig) -> f64 {
+    let omega = 2.0 * std::f64::consts::PI * cfg.contact_hz;
+    let zeta = cfg.contact_damping;
+    let tau = if zeta > 1.0 {
+        2.0 * zeta / omega
+    } else {
+        1.0 / (zeta.max(1e-3) * omega)
+    };
+    10.0 * tau
+}
+
 /// rapier's settings for a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WorldConfig {
@@ -187,6 +205,7 @@ pub struct World {
     pockets: Vec<ColliderHandle>,
     params: Params,
     time: f64,
+    settle_time: f64,
 }
 
 fn to_glam(v: Vec3) -> Vector {
@@ -283,26 +302,29 @@ impl World {
             pockets,
             params: *params,
             time: 0.0,
+            settle_time: settle_time(cfg),
         }
     }
 
-    /// Lets the resting balls sink into the soft cloth until they are still (at most `max_time`
-    /// seconds), then gives every ball its starting velocity and spin and sets the clock to 0.
+    /// Lets the resting balls sink into the soft cloth until they are still (at least ten of the
+    /// contact's time constants, at most `max_time` seconds), then gives every ball its starting velocity and spin and sets the clock to 0.
     /// Returns the depth the balls sank, m.
     pub fn launch(&mut self, balls: &[Ball], max_time: f64) -> f64 {
         let dt = self.dt();
         let steps = (max_time / dt).ceil() as usize;
-        let mut last = f64::INFINITY;
-        for _ in 0..steps {
+        let min_steps = (self.settle_time / dt).ceil() as usize;
+        for k in 0..steps {
             self.step();
-            let z = self.kinematics(0).pos.z;
-            let settled = (z - last).abs() < 1e-12 * dt / 1e-4;
-            last = z;
-            if settled {
+            if self.is_empty() || (k >= min_steps && self.kinematics(0).vel.z.abs() < SETTLED_SPEED)
+            {
                 break;
             }
         }
-        let sink = self.params.ball_radius - self.kinematics(0).pos.z;
+        let sink = if self.is_empty() {
+            0.0
+        } else {
+            self.params.ball_radius - self.kinematics(0).pos.z
+        };
         for (slot, b) in self.balls.iter().zip(balls) {
             let rb = &mut self.phys.bodies[slot.body];
             let z = rb.translation().z;

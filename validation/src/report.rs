@@ -280,18 +280,15 @@ fn details(out: &mut String, report: &Report) {
                     );
                 }
             }
-            Outcome::Skipped { reason } => {
+            Outcome::Skipped { reason } | Outcome::Failed { reason } => {
+                let what = if matches!(r.outcome, Outcome::Skipped { .. }) {
+                    "Skipped"
+                } else {
+                    "**Error**"
+                };
                 let _ = writeln!(
                     out,
-                    "\n### {} ({})\n\nSkipped: {reason}.",
-                    r.scene,
-                    r.models.name()
-                );
-            }
-            Outcome::Failed { reason } => {
-                let _ = writeln!(
-                    out,
-                    "\n### {} ({})\n\n**Error:** {reason}.",
+                    "\n### {} ({})\n\n{what}: {reason}.",
                     r.scene,
                     r.models.name()
                 );

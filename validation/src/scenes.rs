@@ -4,53 +4,36 @@
 use serde_json::json;
 use snooker_engine::{BallBallModel, CushionModel, Models};
 
+/// `(file name, text)` pairs of scene files of `validation/scenes/`, by stem.
+macro_rules! scene_files {
+    ($($stem:literal),* $(,)?) => {
+        &[$((concat!($stem, ".toml"), include_str!(concat!("../scenes/", $stem, ".toml")))),*]
+    };
+}
+
 /// The scene files of `validation/scenes/`: (file name, text).
-pub const BUILTIN: &[(&str, &str)] = &[
-    ("stun.toml", include_str!("../scenes/stun.toml")),
-    ("screw.toml", include_str!("../scenes/screw.toml")),
-    ("follow.toml", include_str!("../scenes/follow.toml")),
-    ("sidespin.toml", include_str!("../scenes/sidespin.toml")),
-    ("cushion-15.toml", include_str!("../scenes/cushion-15.toml")),
-    (
-        "cushion-15-spin.toml",
-        include_str!("../scenes/cushion-15-spin.toml"),
-    ),
-    ("cushion-30.toml", include_str!("../scenes/cushion-30.toml")),
-    (
-        "cushion-30-spin.toml",
-        include_str!("../scenes/cushion-30-spin.toml"),
-    ),
-    ("cushion-45.toml", include_str!("../scenes/cushion-45.toml")),
-    (
-        "cushion-45-spin.toml",
-        include_str!("../scenes/cushion-45-spin.toml"),
-    ),
-    ("cushion-60.toml", include_str!("../scenes/cushion-60.toml")),
-    (
-        "cushion-60-spin.toml",
-        include_str!("../scenes/cushion-60-spin.toml"),
-    ),
-    ("cushion-90.toml", include_str!("../scenes/cushion-90.toml")),
-    (
-        "cushion-90-spin.toml",
-        include_str!("../scenes/cushion-90-spin.toml"),
-    ),
-    (
-        "head-on-stun.toml",
-        include_str!("../scenes/head-on-stun.toml"),
-    ),
-    (
-        "head-on-roll.toml",
-        include_str!("../scenes/head-on-roll.toml"),
-    ),
-    ("cut-30.toml", include_str!("../scenes/cut-30.toml")),
-    ("cut-60.toml", include_str!("../scenes/cut-60.toml")),
-    (
-        "combination.toml",
-        include_str!("../scenes/combination.toml"),
-    ),
-    ("break-off.toml", include_str!("../scenes/break-off.toml")),
-];
+pub const BUILTIN: &[(&str, &str)] = scene_files!(
+    "stun",
+    "screw",
+    "follow",
+    "sidespin",
+    "cushion-15",
+    "cushion-15-spin",
+    "cushion-30",
+    "cushion-30-spin",
+    "cushion-45",
+    "cushion-45-spin",
+    "cushion-60",
+    "cushion-60-spin",
+    "cushion-90",
+    "cushion-90-spin",
+    "head-on-stun",
+    "head-on-roll",
+    "cut-30",
+    "cut-60",
+    "combination",
+    "break-off",
+);
 
 /// The impact models a scene is run with.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
