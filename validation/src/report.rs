@@ -395,6 +395,12 @@ reduced to what both can resolve: contacts closing slower than 2 mm/s (twice our
 micro-collision speed `MIN_SEPARATION`) are resting contacts, and repeats of one contact within
 two steps are one impact.
 
+**Time step.** dt = 10⁻⁴ s, from the study at the end: halving the step from 4×10⁻⁴ s
+halves the largest differences (the step's share dominates), from 10⁻⁴ s on a halving changes
+them by a third or less and far inside their tolerances (the soft contact's share, which does
+not depend on dt, dominates), and the whole set takes about 15 s, which keeps the integration
+tests (`validation/tests/crosscheck.rs`) within the CI budget.
+
 The verdict of a run passes when the impact sequences are identical and every figure is within
 its tolerance; `snooker validate` exits non-zero otherwise.
 
@@ -407,8 +413,9 @@ between the runs; none is a fitted number. With a_s = μ_s g, a_r = μ_r g:
   boundary: each may shift by one step dt, and within a step the cloth's friction changes a speed
   by up to a_s dt and a sliding ball's spin by 5a_s dt/2R. rapier's state after an impact is the
   state at the end of that step.
-- **Soft contact.** A resting ball sinks δ into rapier's cloth (measured each run, about
-  6.6×10⁻⁵ m) and rapier puts the contact point at mid-depth: the ball rolls on R' = R(1 − ε),
+- **Soft contact.** A ball sinks δ into rapier's cloth (the largest depth seen in the run,
+  about 6.9×10⁻⁵ m: the static deflection g/(2π·60 Hz)² of rapier's contact spring against a
+  fixed body) and rapier puts the contact point at mid-depth: the ball rolls on R' = R(1 − ε),
   ε = δ/2R. From the conservation of angular momentum about the contact point, the rolling
   speed (k²v₀ + 0.4kω₀R)/(k² + 0.4), k = R'/R, moves by at most ε(0.41|v₀| + 0.13|ω₀|R); the
   sliding time by at most ε(|ω₀|R/3.5a_s + 1.43 t_slide); while sliding, the friction's torque
