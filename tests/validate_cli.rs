@@ -29,7 +29,10 @@ fn one_scene_passes_and_writes_its_reports() {
     let dir = std::env::temp_dir().join(format!("snooker-validate-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (json, md) = (dir.join("r.json"), dir.join("r.md"));
-    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/validation/scenes/head-on-stun.toml");
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/validation/scenes/head-on-stun.toml"
+    );
     let out = snooker()
         .args(["validate", "--scene", scene, "--json"])
         .arg(&json)
@@ -39,10 +42,17 @@ fn one_scene_passes_and_writes_its_reports() {
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{text}");
-    assert!(text.contains("head-on-stun") && text.contains("PASS"), "{text}");
+    assert!(
+        text.contains("head-on-stun") && text.contains("PASS"),
+        "{text}"
+    );
     let doc: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     assert_eq!(doc["runs"][0]["outcome"]["status"], "compared");
-    assert!(std::fs::read_to_string(&md).unwrap().contains("| head-on-stun |"));
+    assert!(
+        std::fs::read_to_string(&md)
+            .unwrap()
+            .contains("| head-on-stun |")
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
