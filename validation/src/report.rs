@@ -463,11 +463,13 @@ outcomes have nothing in common. Our engine is run on an ensemble of the shot wi
 ball's heading turned by multiples of 10⁻⁴ rad (−8 … 8, far below a player's aim) and rapier's \
 outcome is set beside the ensemble. Ball-ball impact counts are not comparable by construction: \
 rapier's pack contacts start from rest and carry force without an approach speed, so they do \
-not count as impacts. The number of balls that moved shows the real difference: pairwise \
-sequential impacts (ours) pass the whole momentum along each line of centres and eject the far \
-balls of the pack, while rapier's simultaneous solve shares it among the touching balls, which \
-move off more together. The rigid-body model does not decide between the two (simultaneous \
-contacts are ill-posed for rigid balls); real balls, with ~0.2 ms contacts, lie between.\n";
+not count as impacts. The number of balls that moved is where the engines really differ, and \
+we attribute it to the treatment of touching balls: pairwise sequential impacts (ours) pass the \
+momentum along each line of centres in turn and eject the far balls of the pack, while rapier's \
+simultaneous solve shares it among all the touching balls at once, which then move off more \
+together. The rigid-body model does not decide between the two (simultaneous contacts of rigid \
+balls have no unique outcome); which is closer to real balls is a question for measured \
+break-offs, not for this cross-check.\n";
 
 const NOSE: &str = "The first cushion impact of each cushion scene, frictionless, rapier's \
 cushions at the nose height 7R/5 (cloth friction off during the impact, as the frictionless \
