@@ -3,3 +3,4 @@
 
 pub mod output;
 pub mod scene;
+pub mod validate_cmd;

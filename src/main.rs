@@ -2,7 +2,7 @@
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use snooker::{output, scene};
+use snooker::{output, scene, validate_cmd};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -29,6 +29,25 @@ enum Command {
         /// Print nothing but errors (and the JSON if it goes to standard output).
         #[arg(long, short)]
         quiet: bool,
+    },
+    /// Cross-check the engine against rapier on the validation scenes (or the given ones) and
+    /// print the report; exits with 1 when a verdict fails.
+    Validate {
+        /// A scene file to check (repeatable); the built-in validation set when none is given.
+        #[arg(long = "scene", value_name = "S")]
+        scenes: Vec<PathBuf>,
+        /// Write the report as JSON to this file.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// Write the report as Markdown to this file (docs/validation.md).
+        #[arg(long, value_name = "OUT")]
+        markdown: Option<PathBuf>,
+        /// rapier's time step, s.
+        #[arg(long, default_value_t = snooker_validation::crosscheck::DEFAULT_DT)]
+        dt: f64,
+        /// Also run the time-step study (several minutes).
+        #[arg(long)]
+        convergence: bool,
     },
 }
 
@@ -112,6 +131,17 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
     ExitCode::SUCCESS
 }
 
+fn validate(req: validate_cmd::Request) -> ExitCode {
+    match validate_cmd::execute(&req) {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(SIM_FAILED),
+        Err(e) => {
+            eprintln!("error: {}", e.0);
+            ExitCode::from(BAD_INPUT)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -123,5 +153,18 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Simulate { scene, json, quiet } => simulate(scene, json, quiet),
+        Command::Validate {
+            scenes,
+            json,
+            markdown,
+            dt,
+            convergence,
+        } => validate(validate_cmd::Request {
+            scenes,
+            dt,
+            convergence,
+            json,
+            markdown,
+        }),
     }
 }

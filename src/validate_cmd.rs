@@ -1,0 +1,152 @@
+//! `snooker validate`: the cross-check against rapier over the validation scene set (or given
+//! scenes), with a progress bar, a report table, and optional JSON and Markdown output.
+
+use crate::scene;
+use indicatif::{ProgressBar, ProgressStyle};
+use snooker_validation::convergence;
+use snooker_validation::crosscheck::{self, Outcome, SceneSpec};
+use snooker_validation::nose;
+use snooker_validation::report::{self, Report};
+use snooker_validation::scenes::BUILTIN;
+use std::path::{Path, PathBuf};
+
+/// Time steps of the convergence study, s (halving).
+pub const STUDY_STEPS: [f64; 5] = [4e-4, 2e-4, 1e-4, 5e-5, 2.5e-5];
+
+/// What `snooker validate` was asked to do.
+pub struct Request {
+    /// Scene files; the built-in set when empty.
+    pub scenes: Vec<PathBuf>,
+    /// rapier's time step, s.
+    pub dt: f64,
+    /// Also run the time-step study.
+    pub convergence: bool,
+    /// Write the report as JSON here.
+    pub json: Option<PathBuf>,
+    /// Write the report as Markdown here.
+    pub markdown: Option<PathBuf>,
+}
+
+/// Why `snooker validate` stopped before comparing.
+#[derive(Debug)]
+pub struct BadInput(pub String);
+
+/// Loads the requested scenes (or the built-in set).
+pub fn load_scenes(paths: &[PathBuf]) -> Result<Vec<SceneSpec>, BadInput> {
+    let parsed: Result<Vec<scene::Scene>, scene::SceneError> = if paths.is_empty() {
+        BUILTIN
+            .iter()
+            .map(|(file, text)| scene::parse(text, &format!("validation/scenes/{file}")))
+            .collect()
+    } else {
+        paths.iter().map(|p| scene::load(p)).collect()
+    };
+    let scenes = parsed.map_err(|e| BadInput(e.to_string()))?;
+    Ok(scenes
+        .into_iter()
+        .map(|s| SceneSpec {
+            name: s.name,
+            setup: s.setup,
+            options: s.options,
+        })
+        .collect())
+}
+
+fn bar(len: usize) -> ProgressBar {
+    let pb = ProgressBar::new(len as u64);
+    if let Ok(style) =
+        ProgressStyle::with_template("{prefix:>10} [{bar:30}] {pos}/{len} {wide_msg}")
+    {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb
+}
+
+/// Runs the cross-check; returns the report.
+pub fn run(req: &Request, specs: &[SceneSpec]) -> Report {
+    let pb = bar(specs.len());
+    pb.set_prefix("cross-check");
+    let mut runs = Vec::new();
+    for s in specs {
+        pb.set_message(s.name.clone());
+        runs.extend(crosscheck::check_scene(s, req.dt));
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    let with_cushions: Vec<&SceneSpec> = specs
+        .iter()
+        .filter(|s| {
+            runs.iter().any(|r| {
+                r.scene == s.name
+                    && matches!(&r.outcome, Outcome::Compared { comparison, .. }
+                        if comparison.sequence_ours.iter().any(|l| l.contains('|')))
+            })
+        })
+        .collect();
+    let pb = bar(with_cushions.len());
+    pb.set_prefix("nose");
+    let nose = with_cushions
+        .iter()
+        .filter_map(|s| {
+            pb.set_message(s.name.clone());
+            let n = nose::nose_rebound(s, req.dt);
+            pb.inc(1);
+            n
+        })
+        .collect();
+    pb.finish_and_clear();
+    let convergence = if req.convergence {
+        let pb = bar(specs.len() * STUDY_STEPS.len());
+        pb.set_prefix("dt study");
+        let rows = convergence::study(specs, &STUDY_STEPS, |r| {
+            pb.set_message(r.scene.clone());
+            pb.inc(1);
+        });
+        pb.finish_and_clear();
+        rows
+    } else {
+        Vec::new()
+    };
+    Report {
+        dt: req.dt,
+        runs,
+        nose,
+        convergence,
+    }
+}
+
+/// Writes `text` to `path`, naming the path in the error.
+pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
+    std::fs::write(path, text)
+        .map_err(|e| BadInput(format!("cannot write {}: {e}", path.display())))
+}
+
+/// Prints the report and writes the requested files.
+pub fn output(req: &Request, report: &Report) -> Result<(), BadInput> {
+    print!("{}", report::text(report));
+    if let Some(p) = &req.json {
+        let text = serde_json::to_string_pretty(report).map_err(|e| BadInput(e.to_string()))?;
+        write(p, &(text + "\n"))?;
+        println!("JSON written to {}", p.display());
+    }
+    if let Some(p) = &req.markdown {
+        write(p, &report::markdown(report))?;
+        println!("Markdown written to {}", p.display());
+    }
+    Ok(())
+}
+
+/// Checks the request, runs the cross-check and writes the outputs: `Ok(true)` when every
+/// verdict passed, `Ok(false)` when one failed, `Err` for bad input.
+pub fn execute(req: &Request) -> Result<bool, BadInput> {
+    if !(req.dt.is_finite() && req.dt > 0.0 && req.dt <= 1e-2) {
+        return Err(BadInput(format!(
+            "--dt {}: must be a time step in (0, 0.01] s",
+            req.dt
+        )));
+    }
+    let specs = load_scenes(&req.scenes)?;
+    let report = run(req, &specs);
+    output(req, &report)?;
+    Ok(report.pass())
+}

@@ -1,0 +1,58 @@
+//! `snooker validate` on the command line: bad input exits 2 with a message naming it; a
+//! passing scene exits 0 and writes the JSON and Markdown reports.
+
+use std::process::Command;
+
+fn snooker() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_snooker"))
+}
+
+#[test]
+fn a_missing_scene_is_bad_input() {
+    let out = snooker()
+        .args(["validate", "--scene", "no/such/scene.toml"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("no/such/scene.toml"), "{err}");
+}
+
+#[test]
+fn a_bad_time_step_is_bad_input() {
+    let out = snooker().args(["validate", "--dt", "-1"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn one_scene_passes_and_writes_its_reports() {
+    let dir = std::env::temp_dir().join(format!("snooker-validate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (json, md) = (dir.join("r.json"), dir.join("r.md"));
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/validation/scenes/head-on-stun.toml"
+    );
+    let out = snooker()
+        .args(["validate", "--scene", scene, "--json"])
+        .arg(&json)
+        .arg("--markdown")
+        .arg(&md)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("head-on-stun") && text.contains("PASS"),
+        "{text}"
+    );
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(doc["runs"][0]["outcome"]["status"], "compared");
+    assert!(
+        std::fs::read_to_string(&md)
+            .unwrap()
+            .contains("| head-on-stun |")
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

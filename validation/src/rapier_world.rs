@@ -1,0 +1,472 @@
+//! A scene as a rapier world.
+//!
+//! - Balls: dynamic spheres of the scene's radius and mass; rapier gives a solid sphere the
+//!   inertia 2 M R^2 / 5, the engine's [`Params::inertia`].
+//! - Cloth: a fixed half-space z <= 0 (our engine's cloth is endless too: a ball leaves it only
+//!   by entering a pocket's fall).
+//! - Cushions, jaws and pockets: the solids of [`crate::shapes`] (pockets as sensors).
+//! - Friction and restitution per pair, set by a contact hook from the scene's parameters.
+
+use crate::shapes::{CushionContact, TableShapes};
+use crate::table_laws::Load;
+use rapier3d_f64::math::Vector;
+use rapier3d_f64::prelude::*;
+use snooker_engine::{Ball, Params, Table, Vec3};
+
+/// What a collider stands for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Body {
+    /// The cloth.
+    Cloth,
+    /// Ball `i` of the scene.
+    Ball(usize),
+    /// Straight cushion `k` of the table (nose or pocket facing).
+    Cushion(usize),
+    /// Jaw `k` of the table.
+    Jaw(usize),
+    /// Pocket `k` of the table (a sensor).
+    Pocket(usize),
+}
+
+impl Body {
+    fn encode(self) -> u128 {
+        let (tag, i) = match self {
+            Body::Cloth => (0u128, 0usize),
+            Body::Ball(i) => (1, i),
+            Body::Cushion(i) => (2, i),
+            Body::Jaw(i) => (3, i),
+            Body::Pocket(i) => (4, i),
+        };
+        (tag << 64) | i as u128
+    }
+
+    fn decode(data: u128) -> Body {
+        let i = (data & u64::MAX as u128) as usize;
+        match data >> 64 {
+            1 => Body::Ball(i),
+            2 => Body::Cushion(i),
+            3 => Body::Jaw(i),
+            4 => Body::Pocket(i),
+            _ => Body::Cloth,
+        }
+    }
+}
+
+/// How the impacts are treated in rapier.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImpactFriction {
+    /// The frictionless limit of the thesis's models (physics.md, "Analytic limits"): no
+    /// ball-ball or ball-cushion friction, and no cloth friction during a cushion impact
+    /// (mu_s = 0 during the impact), so that the velocity along the cushion is kept.
+    Off,
+    /// Ball-ball friction mu_ball, cushion friction mu_cushion, and the cloth's friction acting
+    /// on the cloth's reaction during the impact, as in the thesis's 3D models (§6.1, §6.2).
+    On,
+}
+
+/// Vertical speed below which a ball has settled into the cloth, m/s (within a nanometre of
+/// rest for rapier's contact time constants of tens of milliseconds).
+const SETTLED_SPEED: f64 = 1e-8;
+
+/// Time for a resting ball to settle into rapier's soft cloth: ten time constants of the slow
+/// mode of the contact's spring-damper, 2 zeta / omega when overdamped (zeta > 1), else
+/// 1 / (zeta omega), s.
+fn settle_time(cfg: &WorldConfig) -> f64 {
+    let omega = 2.0 * std::f64::consts::PI * cfg.contact_hz;
+    let zeta = cfg.contact_damping;
+    let tau = if zeta > 1.0 {
+        2.0 * zeta / omega
+    } else {
+        1.0 / (zeta.max(1e-3) * omega)
+    };
+    10.0 * tau
+}
+
+/// rapier's settings for a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorldConfig {
+    /// Time step, s.
+    pub dt: f64,
+    /// Friction during impacts.
+    pub impact_friction: ImpactFriction,
+    /// Natural frequency of the soft contacts, Hz (rapier's default: 30 between bodies, 60
+    /// against fixed bodies).
+    pub contact_hz: f64,
+    /// Damping ratio of the soft contacts (rapier's default: 10).
+    pub contact_damping: f64,
+    /// Solver iterations per step (rapier's default: 4).
+    pub solver_iterations: usize,
+    /// Where the cushions touch the balls.
+    pub cushion_contact: CushionContact,
+}
+
+impl WorldConfig {
+    /// rapier's default contact softness and solver, at time step `dt`, the cushions touching
+    /// at the nose height with friction on and level in the frictionless limit (see
+    /// [`CushionContact`]).
+    pub fn new(dt: f64, impact_friction: ImpactFriction) -> WorldConfig {
+        WorldConfig {
+            dt,
+            impact_friction,
+            cushion_contact: match impact_friction {
+                ImpactFriction::On => CushionContact::Nose,
+                ImpactFriction::Off => CushionContact::Level,
+            },
+            contact_hz: 60.0,
+            contact_damping: 10.0,
+            solver_iterations: 4,
+        }
+    }
+}
+
+/// The per-pair friction and restitution, applied by rapier's contact-modification hook.
+struct ContactRules {
+    params: Params,
+    impact_friction: ImpactFriction,
+    /// Per ball: the cloth's friction is off during this step (a frictionless cushion impact).
+    cloth_friction_off: Vec<bool>,
+}
+
+impl ContactRules {
+    /// (friction, restitution) for a pair of bodies.
+    fn coefficients(&self, a: Body, b: Body) -> (f64, f64) {
+        let p = &self.params;
+        let on = self.impact_friction == ImpactFriction::On;
+        let (ball, other) = match (a, b) {
+            (Body::Ball(i), o) | (o, Body::Ball(i)) => (i, o),
+            _ => return (0.0, 0.0),
+        };
+        match other {
+            // Thesis §6.1: mu_bb, e (Newton's restitution in rapier, energetic in ours).
+            Body::Ball(_) => (if on { p.mu_ball } else { 0.0 }, p.e_ball),
+            // Thesis §6.2: mu_w, e_e at the nose.
+            Body::Cushion(_) | Body::Jaw(_) => (if on { p.mu_cushion } else { 0.0 }, p.e_cushion),
+            // Thesis §2.4.2: sliding friction mu_s; the cloth does not bounce.
+            Body::Cloth => (
+                if self.cloth_friction_off.get(ball).copied().unwrap_or(false) {
+                    0.0
+                } else {
+                    p.mu_slide
+                },
+                0.0,
+            ),
+            Body::Pocket(_) => (0.0, 0.0),
+        }
+    }
+}
+
+impl PhysicsHooks for ContactRules {
+    fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
+        let a = Body::decode(ctx.colliders[ctx.collider1].user_data);
+        let b = Body::decode(ctx.colliders[ctx.collider2].user_data);
+        let (friction, restitution) = self.coefficients(a, b);
+        if let Some(m) = ctx.rigid_mut() {
+            *m.friction = friction;
+            *m.restitution = restitution;
+        }
+    }
+}
+
+/// A contact of a ball seen after a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Touch {
+    /// The ball.
+    pub ball: usize,
+    /// What it touches.
+    pub other: Body,
+    /// Normal impulse of the step, N s.
+    pub normal_impulse: f64,
+    /// Magnitude of the friction impulse of the step, N s.
+    pub tangent_impulse: f64,
+}
+
+/// Position, velocity and spin of a ball in rapier, table frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics {
+    /// Centre, m.
+    pub pos: Vec3,
+    /// Velocity, m/s.
+    pub vel: Vec3,
+    /// Angular velocity, rad/s.
+    pub spin: Vec3,
+}
+
+struct Slot {
+    body: RigidBodyHandle,
+    collider: ColliderHandle,
+    in_play: bool,
+}
+
+/// A scene built as a rapier world.
+pub struct World {
+    phys: PhysicsWorld,
+    rules: ContactRules,
+    balls: Vec<Slot>,
+    pockets: Vec<ColliderHandle>,
+    params: Params,
+    time: f64,
+    settle_time: f64,
+}
+
+fn to_glam(v: Vec3) -> Vector {
+    Vector::new(v.x, v.y, v.z)
+}
+
+fn from_glam(v: Vector) -> Vec3 {
+    Vec3::new(v.x, v.y, v.z)
+}
+
+impl World {
+    /// Builds the world for `table` and `balls` (their starting states are applied by
+    /// [`World::launch`] after the balls have settled into the cloth).
+    pub fn new(table: &Table, params: &Params, balls: &[Ball], cfg: &WorldConfig) -> World {
+        let mut phys = PhysicsWorld::new();
+        phys.gravity = Vector::new(0.0, 0.0, -params.g);
+        let ip = &mut phys.integration_parameters;
+        ip.dt = cfg.dt;
+        ip.num_solver_iterations = cfg.solver_iterations;
+        // One Coulomb friction constraint per contact point, no "twist" constraint (which
+        // would resist spin about the contact normal: the cloth's sidespin law is ours).
+        ip.friction_model = FrictionModel::Coulomb;
+        ip.contact_recycling = false;
+        ip.contact_softness = SpringCoefficients::new(cfg.contact_hz, cfg.contact_damping);
+        ip.static_contact_softness = SpringCoefficients::new(cfg.contact_hz, cfg.contact_damping);
+
+        let fixed = phys.insert_body(RigidBodyBuilder::fixed());
+        let add_fixed = |phys: &mut PhysicsWorld, c: ColliderBuilder| {
+            phys.insert_collider(c, Some(fixed));
+        };
+        add_fixed(
+            &mut phys,
+            ColliderBuilder::new(SharedShape::halfspace(Vector::Z)).user_data(Body::Cloth.encode()),
+        );
+        let shapes = TableShapes::new(table, params, cfg.cushion_contact);
+        for (k, c) in shapes.noses.iter().enumerate() {
+            add_fixed(
+                &mut phys,
+                ColliderBuilder::capsule_from_endpoints(to_glam(c.a), to_glam(c.b), c.radius)
+                    .user_data(Body::Cushion(k).encode()),
+            );
+        }
+        for (k, j) in shapes.jaws.iter().enumerate() {
+            add_fixed(
+                &mut phys,
+                ColliderBuilder::ball(j.radius)
+                    .translation(to_glam(j.centre))
+                    .user_data(Body::Jaw(k).encode()),
+            );
+        }
+        let mut pockets = Vec::new();
+        for (k, pk) in shapes.pockets.iter().enumerate() {
+            let h = phys.insert_collider(
+                ColliderBuilder::ball(pk.radius)
+                    .translation(to_glam(pk.centre))
+                    .sensor(true)
+                    .user_data(Body::Pocket(k).encode()),
+                Some(fixed),
+            );
+            pockets.push(h);
+        }
+        let mut slots = Vec::new();
+        for (i, b) in balls.iter().enumerate() {
+            let body = phys.insert_body(
+                RigidBodyBuilder::dynamic()
+                    .translation(to_glam(Vec3::new(
+                        b.state.pos.x,
+                        b.state.pos.y,
+                        b.state.pos.z.max(params.ball_radius),
+                    )))
+                    .can_sleep(false),
+            );
+            let collider = phys.insert_collider(
+                ColliderBuilder::ball(params.ball_radius)
+                    .mass(params.ball_mass)
+                    .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS)
+                    .user_data(Body::Ball(i).encode()),
+                Some(body),
+            );
+            slots.push(Slot {
+                body,
+                collider,
+                in_play: true,
+            });
+        }
+        World {
+            phys,
+            rules: ContactRules {
+                params: *params,
+                impact_friction: cfg.impact_friction,
+                cloth_friction_off: vec![false; balls.len()],
+            },
+            balls: slots,
+            pockets,
+            params: *params,
+            time: 0.0,
+            settle_time: settle_time(cfg),
+        }
+    }
+
+    /// Lets the resting balls sink into the soft cloth until they are still (at least ten of the
+    /// contact's time constants, at most `max_time` seconds), then gives every ball its starting velocity and spin and sets the clock to 0.
+    /// Returns the depth the balls sank, m.
+    pub fn launch(&mut self, balls: &[Ball], max_time: f64) -> f64 {
+        let dt = self.dt();
+        let steps = (max_time / dt).ceil() as usize;
+        let min_steps = (self.settle_time / dt).ceil() as usize;
+        for k in 0..steps {
+            self.step();
+            if self.is_empty() || (k >= min_steps && self.kinematics(0).vel.z.abs() < SETTLED_SPEED)
+            {
+                break;
+            }
+        }
+        let sink = if self.is_empty() {
+            0.0
+        } else {
+            self.params.ball_radius - self.kinematics(0).pos.z
+        };
+        for (slot, b) in self.balls.iter().zip(balls) {
+            let rb = &mut self.phys.bodies[slot.body];
+            let z = rb.translation().z;
+            let lift = (b.state.pos.z - self.params.ball_radius).max(0.0);
+            rb.set_translation(Vector::new(b.state.pos.x, b.state.pos.y, z + lift), true);
+            rb.set_linvel(to_glam(b.state.vel), true);
+            rb.set_angvel(to_glam(b.state.spin), true);
+        }
+        self.time = 0.0;
+        sink
+    }
+
+    /// The time step, s.
+    pub fn dt(&self) -> f64 {
+        self.phys.integration_parameters.dt
+    }
+
+    /// Simulated time since [`World::launch`], s.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Number of balls (in play or not).
+    pub fn len(&self) -> usize {
+        self.balls.len()
+    }
+
+    /// True when the world has no balls.
+    pub fn is_empty(&self) -> bool {
+        self.balls.is_empty()
+    }
+
+    /// True while ball `i` has not been pocketed.
+    pub fn in_play(&self, i: usize) -> bool {
+        self.balls[i].in_play
+    }
+
+    /// Ball `i`'s state.
+    pub fn kinematics(&self, i: usize) -> Kinematics {
+        let rb = &self.phys.bodies[self.balls[i].body];
+        Kinematics {
+            pos: from_glam(rb.translation()),
+            vel: from_glam(rb.linvel()),
+            spin: from_glam(rb.angvel()),
+        }
+    }
+
+    /// Sets the external load on ball `i` for the next step.
+    pub fn set_load(&mut self, i: usize, load: Load) {
+        let rb = &mut self.phys.bodies[self.balls[i].body];
+        rb.reset_forces(true);
+        rb.reset_torques(true);
+        rb.add_force(to_glam(load.force), true);
+        rb.add_torque(to_glam(load.torque), true);
+    }
+
+    /// Turns the cloth's friction on ball `i` off (or back on) for the next step.
+    pub fn set_cloth_friction_off(&mut self, i: usize, off: bool) {
+        self.rules.cloth_friction_off[i] = off;
+    }
+
+    /// True when the cloth's friction on ball `i` is off for the next step.
+    pub fn cloth_friction_off(&self, i: usize) -> bool {
+        self.rules.cloth_friction_off[i]
+    }
+
+    /// Advances the world by one step.
+    pub fn step(&mut self) {
+        self.phys.step_with_events(&self.rules, &());
+        self.time += self.dt();
+    }
+
+    /// Every contact of a ball in play that carried an impulse during the last step.
+    pub fn touches(&self) -> Vec<Touch> {
+        let mut out = Vec::new();
+        for (i, slot) in self.balls.iter().enumerate() {
+            if !slot.in_play {
+                continue;
+            }
+            for pair in self.phys.narrow_phase.contact_pairs_with(slot.collider) {
+                let other_handle = if pair.collider1 == slot.collider {
+                    pair.collider2
+                } else {
+                    pair.collider1
+                };
+                let other = Body::decode(self.phys.colliders[other_handle].user_data);
+                let mut normal = 0.0;
+                let mut tangent = 0.0;
+                for m in pair.solver_manifolds() {
+                    for c in &m.points {
+                        normal += c.data.impulse;
+                        tangent += c.data.tangent_impulse.norm();
+                    }
+                }
+                if normal > 0.0 {
+                    out.push(Touch {
+                        ball: i,
+                        other,
+                        normal_impulse: normal,
+                        tangent_impulse: tangent,
+                    });
+                }
+            }
+        }
+        out
+    }
+
+    /// The pocket ball `i` overlaps, if any.
+    pub fn pocket_of(&self, i: usize) -> Option<usize> {
+        let c = self.balls[i].collider;
+        self.pockets.iter().position(|&p| {
+            self.phys
+                .narrow_phase
+                .intersection_pair(c, p)
+                .unwrap_or(false)
+        })
+    }
+
+    /// Takes ball `i` out of play (it fell into a pocket).
+    pub fn remove(&mut self, i: usize) {
+        let slot = &mut self.balls[i];
+        if slot.in_play {
+            slot.in_play = false;
+            self.phys.bodies[slot.body].set_enabled(false);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bodies_round_trip_through_user_data() {
+        for b in [
+            Body::Cloth,
+            Body::Ball(3),
+            Body::Cushion(17),
+            Body::Jaw(11),
+            Body::Pocket(5),
+        ] {
+            assert_eq!(Body::decode(b.encode()), b);
+        }
+    }
+}
