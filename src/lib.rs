@@ -1,6 +1,7 @@
 //! The `snooker` command-line tool's library: scene files, results and summaries around the
 //! physics in `snooker-engine`.
 
+pub mod impact_cmd;
 pub mod output;
 pub mod scene;
 pub mod validate_cmd;

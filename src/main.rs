@@ -2,7 +2,7 @@
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use snooker::{output, scene, validate_cmd};
+use snooker::{impact_cmd, output, scene, validate_cmd};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -30,6 +30,21 @@ enum Command {
         #[arg(long, short)]
         quiet: bool,
     },
+    /// One impact of the thesis's frictional models (chapter 6): the state just after it and
+    /// once the slip on the cloth has ended. Spins in units of V/R as in the thesis's figures.
+    Impact {
+        #[command(subcommand)]
+        which: ImpactKind,
+        /// Print the result as JSON.
+        #[arg(long, global = true)]
+        json: bool,
+        /// Draw slip speed and direction against the normal impulse into this PNG.
+        #[arg(long, global = true, value_name = "FILE.png")]
+        plot: Option<PathBuf>,
+        /// Override a parameter, NAME=VALUE with the scene files' names (repeatable).
+        #[arg(long = "param", global = true, value_name = "NAME=VALUE")]
+        params: Vec<String>,
+    },
     /// Cross-check the engine against rapier on the validation scenes (or the given ones) and
     /// print the report; exits with 1 when a verdict fails.
     Validate {
@@ -48,6 +63,40 @@ enum Command {
         /// Also run the time-step study (several minutes).
         #[arg(long)]
         convergence: bool,
+    },
+}
+
+/// The incoming ball of an impact (spins in units of V/R; 1 = rolling).
+#[derive(clap::Args)]
+struct Incoming {
+    /// Speed of the incoming ball, m/s.
+    #[arg(long)]
+    speed: f64,
+    /// Topspin in units of V/R (1 = rolling, negative = backspin).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    topspin: f64,
+    /// Sidespin in units of V/R (positive = anticlockwise seen from above).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    sidespin: f64,
+}
+
+#[derive(Subcommand)]
+enum ImpactKind {
+    /// A cue ball moving along +x meets a resting object ball.
+    BallBall {
+        #[command(flatten)]
+        incoming: Incoming,
+        /// Cut angle, degrees (0 = full ball; positive: object ball to the left).
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        cut: f64,
+    },
+    /// A ball meets a cushion.
+    Cushion {
+        #[command(flatten)]
+        incoming: Incoming,
+        /// Angle of incidence from the cushion line, degrees (90 = perpendicular).
+        #[arg(long, default_value_t = 90.0)]
+        angle: f64,
     },
 }
 
@@ -131,6 +180,58 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
     ExitCode::SUCCESS
 }
 
+fn impact(which: ImpactKind, json: bool, plot: Option<PathBuf>, params: Vec<String>) -> ExitCode {
+    let (setup, inc) = match which {
+        ImpactKind::BallBall { incoming, cut } => (
+            impact_cmd::Setup::BallBall {
+                speed: incoming.speed,
+                cut: cut.to_radians(),
+            },
+            incoming,
+        ),
+        ImpactKind::Cushion { incoming, angle } => (
+            impact_cmd::Setup::Cushion {
+                speed: incoming.speed,
+                angle: angle.to_radians(),
+            },
+            incoming,
+        ),
+    };
+    let req = impact_cmd::Request {
+        setup,
+        topspin: inc.topspin,
+        sidespin: inc.sidespin,
+        params,
+        json,
+        plot,
+    };
+    let (doc, samples, axes) = match impact_cmd::run(&req) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            return ExitCode::from(BAD_INPUT);
+        }
+    };
+    if req.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&doc).expect("finite numbers")
+        );
+    } else {
+        print!("{}", impact_cmd::text(&doc));
+    }
+    if let Some(path) = &req.plot {
+        if let Err(e) = impact_cmd::plot(&samples, axes, path) {
+            eprintln!("error: --plot {}: {e:#}", path.display());
+            return ExitCode::from(BAD_INPUT);
+        }
+        if !req.json {
+            println!("plot written to {}", path.display());
+        }
+    }
+    ExitCode::SUCCESS
+}
+
 fn validate(req: validate_cmd::Request) -> ExitCode {
     match validate_cmd::execute(&req) {
         Ok(true) => ExitCode::SUCCESS,
@@ -153,6 +254,12 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Simulate { scene, json, quiet } => simulate(scene, json, quiet),
+        Command::Impact {
+            which,
+            json,
+            plot,
+            params,
+        } => impact(which, json, plot, params),
         Command::Validate {
             scenes,
             json,

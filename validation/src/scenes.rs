@@ -79,10 +79,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn frictionless_models_exist() {
+    fn both_model_sets_exist() {
         assert_eq!(
             ImpactModels::Frictionless.models().unwrap(),
-            Models::default()
+            Models {
+                ball_ball: BallBallModel::Frictionless,
+                cushion: CushionModel::Frictionless,
+            }
+        );
+        assert_eq!(
+            ImpactModels::Mathavan.models().unwrap(),
+            Models {
+                ball_ball: BallBallModel::Mathavan,
+                cushion: CushionModel::Mathavan,
+            }
         );
     }
 

@@ -19,8 +19,8 @@
 //! - With the cushions level in the frictionless limit, the sunk ball meets them slightly below
 //!   their axis: the normal tilts by sink / (R + r_c), giving a vertical velocity of up to
 //!   (1 + e) v_n sink / (R + r_c).
-//! - With friction on, the models differ by design (Newton vs energetic restitution, rapier's
-//!   Coulomb friction that can stick vs the thesis's slip-until-zero friction): each engine's
+//! - With friction on, the models differ by design (Newton vs energetic restitution, Coulomb
+//!   friction resolved once per time step vs integrated over the normal impulse): each engine's
 //!   friction impulse is at most mu times the normal impulse, so the velocities after the
 //!   impact differ by at most twice that, 2 mu (1 + e) v_n (plus the cloth's mu_s share), and the
 //!   spins by 5 / (2R) times it; that difference is carried forward like any other.

@@ -117,6 +117,8 @@ pub struct Sample {
     pub slip: Vec3,
     /// Cloth slip of each body, m/s (zero when it does not touch the cloth).
     pub cloth_slip: [Vec3; 2],
+    /// Whether the cloth presses on each body (only then does its cloth slip meet friction).
+    pub pressed: [bool; 2],
     /// Normal relative velocity (positive approaching), m/s.
     pub normal_velocity: f64,
 }
@@ -730,9 +732,10 @@ impl Contact {
         }
         // Scaled units: velocities / V, spins * R / V, impulse / (M V), work / (M V^2).
         let (mut y, v_scale) = self.scaled(k, radius)?;
-        let record = |trace: &mut Option<&mut Vec<Sample>>, p: f64, y: &[f64; N]| {
+        let record = |trace: &mut Option<&mut Vec<Sample>>, p: f64, y: &[f64; N], mode: &Mode| {
             if let Some(t) = trace.as_deref_mut() {
                 let loc = self.local(y);
+                let reaction = self.forces(y, &loc, mode).reaction;
                 t.push(Sample {
                     impulse: p * mass * v_scale,
                     slip: loc.slip[0] * v_scale,
@@ -744,10 +747,14 @@ impl Contact {
                         }
                     }),
                     normal_velocity: loc.vn * v_scale,
+                    pressed: reaction.map(|r| r > 0.0),
                 });
             }
         };
-        record(&mut trace, 0.0, &y);
+        if trace.is_some() {
+            let first = self.mode_at(&y, true, 0.0, ZERO_SLIP_PER_TOLERANCE * tol);
+            record(&mut trace, 0.0, &y, &first);
+        }
         let inv_sum: f64 = self.bodies.iter().map(|b| b.inv_mass).sum();
         // About (1 + e) / (1/m0 + 1/m1) in scaled units: the frictionless impulse.
         let p_guess = (1.0 + self.e) / inv_sum.max(1e-12);
@@ -776,7 +783,7 @@ impl Contact {
                 tol,
                 ROOT_TOLERANCE,
                 CRAWL_STEPS,
-                |x, yy| record(&mut trace, x, yy),
+                |x, yy| record(&mut trace, x, yy, &mode),
             );
             steps += ph.steps;
             if ph.x > 1e3 * p_guess.max(1.0) {

@@ -1,0 +1,139 @@
+//! `snooker impact`: the thesis's impact figures from the command line, JSON, plots, bad input.
+
+use serde_json::Value;
+use std::process::{Command, Output};
+
+fn snooker(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_snooker"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn json(args: &[&str]) -> Value {
+    let mut a = args.to_vec();
+    a.push("--json");
+    let o = snooker(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn head_on_rolling_matches_thesis_figure_6_3() {
+    let d = json(&["impact", "ball-ball", "--speed", "2", "--topspin", "1"]);
+    let obj = d["object_ball"]["after_impact"]["speed"].as_f64().unwrap();
+    assert!((obj / 2.0 - 0.94).abs() < 0.005, "{obj}");
+    // The cue ball hops (thesis §6.1.6) and the hop is reported.
+    assert!(d["cue_ball"]["hop_height"].as_f64().unwrap() > 0.0);
+    // After the slip the object ball rolls at 5/7 v + 2/7 R w_y (head-on along +x). The
+    // ball-ball friction dragged its contact point down during the impact, so w_y < 0
+    // (backspin) and it rolls at less than 5/7 of its speed.
+    let wy = d["object_ball"]["after_impact"]["spin"][1]
+        .as_f64()
+        .unwrap();
+    assert!(wy < 0.0);
+    let rolled = d["object_ball"]["after_slip"]["speed"].as_f64().unwrap();
+    let expect = 5.0 / 7.0 * obj + 2.0 / 7.0 * 0.0262 * wy;
+    assert!((rolled - expect).abs() < 1e-9, "{rolled} vs {expect}");
+    assert_eq!(d["object_ball"]["after_slip"]["motion"], "rolling");
+}
+
+#[test]
+fn perpendicular_rolling_cushion_rebound() {
+    let d = json(&[
+        "impact",
+        "cushion",
+        "--speed",
+        "1",
+        "--angle",
+        "90",
+        "--topspin",
+        "1",
+    ]);
+    let v = d["ball"]["after_impact"]["speed"].as_f64().unwrap();
+    assert!((v - 0.911).abs() < 0.002, "{v}");
+    let text =
+        String::from_utf8(snooker(&["impact", "cushion", "--speed", "1", "--topspin", "1"]).stdout)
+            .unwrap();
+    assert!(
+        text.contains("after the impact") && text.contains("after the slip"),
+        "{text}"
+    );
+}
+
+#[test]
+fn parameters_change_the_result_and_plots_are_written() {
+    let low = json(&[
+        "impact",
+        "ball-ball",
+        "--speed",
+        "3",
+        "--cut",
+        "45",
+        "--topspin",
+        "1",
+        "--sidespin",
+        "1",
+    ]);
+    let high = json(&[
+        "impact",
+        "ball-ball",
+        "--speed",
+        "3",
+        "--cut",
+        "45",
+        "--topspin",
+        "1",
+        "--sidespin",
+        "1",
+        "--param",
+        "mu_ball=0.4",
+    ]);
+    let dir = |d: &Value| {
+        d["object_ball"]["after_impact"]["direction_deg"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!(
+        (dir(&low) - dir(&high)).abs() > 1.0,
+        "more throw with more friction"
+    );
+    let png = std::env::temp_dir().join(format!("snooker-impact-{}.png", std::process::id()));
+    let o = snooker(&[
+        "impact",
+        "cushion",
+        "--speed",
+        "1",
+        "--angle",
+        "45",
+        "--plot",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[1..4], b"PNG");
+    std::fs::remove_file(&png).unwrap();
+}
+
+#[test]
+fn bad_input_exits_with_2() {
+    for args in [
+        &["impact", "cushion", "--speed", "0"][..],
+        &["impact", "cushion", "--speed", "1", "--angle", "120"],
+        &["impact", "ball-ball", "--speed", "1", "--cut", "95"],
+        &[
+            "impact",
+            "ball-ball",
+            "--speed",
+            "1",
+            "--param",
+            "mu_bal=0.1",
+        ],
+        &["impact", "ball-ball", "--speed", "1", "--param", "e_ball=2"],
+        &["impact", "ball-ball", "--speed", "nan"],
+    ] {
+        let o = snooker(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!o.stderr.is_empty());
+    }
+}
