@@ -112,18 +112,20 @@ fn after_slip(s: BallState, p: &Params) -> (BallState, f64, f64, f64) {
     let mut s = motion::settle(s, p);
     let start = s.pos;
     let (mut hop_height, mut hop_length) = (0.0, 0.0);
-    for _ in 0..8 {
+    // A few phases (a hop, a landing, the slide), or many short segments with the cloth's
+    // extra effects on (one per 10 ms of sliding).
+    for _ in 0..100_000 {
         match s.motion {
             Motion::Airborne => {
                 let t = motion::duration(&s, p);
                 hop_height = s.vel.z * s.vel.z / (2.0 * p.g);
                 hop_length = Vec3::new(s.vel.x, s.vel.y, 0.0).norm() * t;
                 let end = motion::state_at(&s, t, p);
-                s = motion::finish(&end, p).map_or(end, |(_, n)| n);
+                s = motion::finish(&s, &end, p).map_or(end, |(_, n)| n);
             }
             Motion::Sliding => {
                 let end = motion::state_at(&s, motion::duration(&s, p), p);
-                let (kind, next) = motion::finish(&end, p).expect("sliding ends");
+                let (kind, next) = motion::finish(&s, &end, p).expect("sliding ends");
                 s = next;
                 if kind == Transition::SlideToRoll {
                     break;

@@ -120,6 +120,13 @@ param_spec!(
     cue_tip_restitution,
     cue_endmass,
     miscue_limit,
+    slope_x,
+    slope_y,
+    nap_drift,
+    mu_slide_low,
+    slide_speed_scale,
+    e_cushion_falloff,
+    e_cushion_knee,
 );
 
 #[derive(Deserialize, Default)]

@@ -399,7 +399,7 @@ proptest! {
         let roll = |s: BallState| {
             let s = motion::settle(s, &p);
             if s.motion == Motion::Sliding {
-                motion::finish(&motion::state_at(&s, motion::duration(&s, &p), &p), &p).unwrap().1
+                motion::finish(&s, &motion::state_at(&s, motion::duration(&s, &p), &p), &p).unwrap().1
             } else {
                 s
             }

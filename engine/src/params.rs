@@ -46,6 +46,27 @@ pub struct Params {
     /// Largest contact offset from the cue axis, as a fraction of R, before a miscue
     /// (thesis §7.1.2 eq. 7.7, after Alciatore: R/2).
     pub miscue_limit: f64,
+    /// Tilt of the bed along x, rad (a ball feels g slope_x towards +x). Off (0) by default;
+    /// the thesis's table is taken as level. See [`crate::motion::cloth`].
+    pub slope_x: f64,
+    /// Tilt of the bed along y, rad. Off (0) by default.
+    pub slope_y: f64,
+    /// Sideways acceleration of the cloth's nap, m/s^2 ([`crate::motion::cloth::nap`]). Off
+    /// (0) by default: the thesis found no nap effect (§5.1.1.1).
+    pub nap_drift: f64,
+    /// Sliding friction at zero slip (Witters and Duymelinck: 0.14); equal to `mu_slide` (no
+    /// speed dependence) by default, as the thesis measured none (§5.1.1.2).
+    pub mu_slide_low: f64,
+    /// Slip speed over which sliding friction rises from `mu_slide_low` to `mu_slide`, m/s
+    /// (0 = no speed dependence, the default).
+    pub slide_speed_scale: f64,
+    /// Fall of the cushion's restitution with the normal impact speed above
+    /// `e_cushion_knee`, per m/s: e_e(v) = e_cushion - e_cushion_falloff (v - knee). Off (0) by
+    /// default; the thesis's rigid model holds below about 2.5 m/s (§6.2.5).
+    pub e_cushion_falloff: f64,
+    /// Normal speed above which the cushion's restitution falls, m/s (thesis §6.2.5.1: e_e
+    /// was fitted below 1.5 m/s).
+    pub e_cushion_knee: f64,
 }
 
 /// Thesis §5.1.4: ball speed / cue speed for a centre-ball (stun) strike.
@@ -74,6 +95,13 @@ impl Default for Params {
             cue_tip_restitution: CENTRE_SPEED_TRANSFER * (cue_mass + ball_mass) / cue_mass - 1.0,
             cue_endmass: squirt_endmass(ball_mass, ball_radius, 0.012, 2.5_f64.to_radians()),
             miscue_limit: 0.5,
+            slope_x: 0.0,
+            slope_y: 0.0,
+            nap_drift: 0.0,
+            mu_slide_low: 0.21,
+            slide_speed_scale: 0.0,
+            e_cushion_falloff: 0.0,
+            e_cushion_knee: 1.5,
         }
     }
 }
@@ -124,8 +152,13 @@ impl Params {
         self.ball_radius * (1.0 - s * s).sqrt()
     }
 
+    /// The cushion's restitution for an impact at normal speed `v`, m/s.
+    pub fn e_cushion_at(&self, v: f64) -> f64 {
+        (self.e_cushion - self.e_cushion_falloff * (v - self.e_cushion_knee).max(0.0)).max(0.0)
+    }
+
     /// The parameters as (name, value) pairs, with their scene-file names.
-    pub fn named(&self) -> [(&'static str, f64); 16] {
+    pub fn named(&self) -> [(&'static str, f64); 23] {
         [
             ("g", self.g),
             ("ball_mass", self.ball_mass),
@@ -143,6 +176,13 @@ impl Params {
             ("cue_tip_restitution", self.cue_tip_restitution),
             ("cue_endmass", self.cue_endmass),
             ("miscue_limit", self.miscue_limit),
+            ("slope_x", self.slope_x),
+            ("slope_y", self.slope_y),
+            ("nap_drift", self.nap_drift),
+            ("mu_slide_low", self.mu_slide_low),
+            ("slide_speed_scale", self.slide_speed_scale),
+            ("e_cushion_falloff", self.e_cushion_falloff),
+            ("e_cushion_knee", self.e_cushion_knee),
         ]
     }
 
@@ -161,7 +201,6 @@ impl Params {
             ("ball_mass", self.ball_mass),
             ("ball_radius", self.ball_radius),
             ("cue_mass", self.cue_mass),
-            ("cue_endmass", self.cue_endmass),
         ];
         for (name, v) in positive {
             if v <= 0.0 {
@@ -178,6 +217,12 @@ impl Params {
             ("mu_ball", self.mu_ball),
             ("mu_cushion", self.mu_cushion),
             ("cue_tip_radius", self.cue_tip_radius),
+            // Zero end mass: no squirt.
+            ("cue_endmass", self.cue_endmass),
+            ("mu_slide_low", self.mu_slide_low),
+            ("slide_speed_scale", self.slide_speed_scale),
+            ("e_cushion_falloff", self.e_cushion_falloff),
+            ("e_cushion_knee", self.e_cushion_knee),
         ];
         for (name, v) in non_negative {
             if v < 0.0 {
@@ -207,6 +252,32 @@ impl Params {
                 reason: format!(
                     "the nose must touch the upper half of the ball: R < h < 2R (R = {r} m), got {} m",
                     self.cushion_height
+                ),
+            });
+        }
+        if self.slide_speed_scale > 0.0 && self.mu_slide_low > self.mu_slide {
+            return Err(ParamError {
+                name: "mu_slide_low",
+                reason: format!(
+                    "sliding friction at rest cannot exceed mu_slide ({}), got {}",
+                    self.mu_slide, self.mu_slide_low
+                ),
+            });
+        }
+        // A resting ball must stay at rest: the tilt's pull on a rolling ball (5/7 g slope)
+        // must be less than the rolling resistance can hold (mu_roll g).
+        let tilt = self.slope_x.hypot(self.slope_y);
+        if tilt > 0.0 && 5.0 / 7.0 * tilt >= self.mu_roll {
+            return Err(ParamError {
+                name: if self.slope_x != 0.0 {
+                    "slope_x"
+                } else {
+                    "slope_y"
+                },
+                reason: format!(
+                    "a tilt of {tilt} rad would roll resting balls away: it must stay below \
+                     7/5 mu_roll = {} rad",
+                    1.4 * self.mu_roll
                 ),
             });
         }

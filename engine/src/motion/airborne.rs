@@ -6,9 +6,9 @@
 use crate::ball::{BallState, Vec3};
 use crate::params::Params;
 
-/// Acceleration in flight.
+/// Acceleration in flight (gravity, with its small component along a tilted bed).
 pub fn acceleration(p: &Params) -> Vec3 {
-    Vec3::new(0.0, 0.0, -p.g)
+    super::cloth::slope(p) - Vec3::new(0.0, 0.0, p.g)
 }
 
 /// Time until the centre comes back down to height R.

@@ -2,6 +2,7 @@
 //! any time, its position polynomial and the time at which it ends.
 
 pub mod airborne;
+pub mod cloth;
 pub mod rolling;
 pub mod sliding;
 pub mod spinning;
@@ -86,6 +87,9 @@ pub enum Transition {
     SpinToStop,
     /// An airborne ball came back down onto the cloth.
     Landing,
+    /// A segment of a law with the effects of [`cloth`] on ended and the law's accelerations
+    /// were renewed; the motion phase is unchanged. Not reported as an event.
+    Refresh,
 }
 
 impl Transition {
@@ -99,6 +103,7 @@ impl Transition {
             Transition::RollToStop => "roll_to_stop",
             Transition::SpinToStop => "spin_to_stop",
             Transition::Landing => "landing",
+            Transition::Refresh => "refresh",
         }
     }
 }
@@ -146,13 +151,35 @@ pub fn path(s: &BallState, p: &Params) -> Path {
     }
 }
 
-/// The transition that ends the current law, applied to `end` (the state evaluated at the
-/// law's end): returns its kind and the state the next law starts from.
+/// The transition that ends the law that started from `start`, applied to `end` (the state
+/// evaluated at the law's end): returns its kind and the state the next law starts from.
 /// Returns `None` for laws that never end (rest, pocketed).
-pub fn finish(end: &BallState, p: &Params) -> Option<(Transition, BallState)> {
+pub fn finish(start: &BallState, end: &BallState, p: &Params) -> Option<(Transition, BallState)> {
     let mut s = *end;
+    let segment_end = match end.motion {
+        Motion::Sliding => !sliding::ends_rolling(start, p),
+        Motion::Rolling => !rolling::ends_stopped(start, p),
+        _ => false,
+    };
+    if segment_end {
+        let next = settle_on_cloth(s, p);
+        if next.motion == end.motion {
+            return Some((Transition::Refresh, next));
+        }
+    }
     let kind = match end.motion {
         Motion::Sliding => {
+            if cloth::active(p) {
+                // The slip along its starting direction is used up, but the bed and nap may
+                // have left a sliver across it: end it as the cloth would, keeping the angular
+                // momentum about the contact point (v = 5/7 v + 2/7 R w x e_z).
+                let r = p.ball_radius;
+                let v = 5.0 / 7.0 * s.vel + 2.0 / 7.0 * r * s.spin.cross(&Vec3::z());
+                s.vel = Vec3::new(v.x, v.y, 0.0);
+                let w = Vec3::z().cross(&s.vel) / r;
+                s.spin.x = w.x;
+                s.spin.y = w.y;
+            }
             s = settle_on_cloth(s, p);
             match s.motion {
                 Motion::Rolling => Transition::SlideToRoll,
@@ -306,7 +333,7 @@ mod tests {
         let v0 = Vec3::new(0.5, 0.0, 0.0);
         let w0 = Vec3::new(0.0, 60.0, 0.0);
         let s = ball(v0, w0, &p);
-        let (kind, e) = finish(&state_at(&s, duration(&s, &p), &p), &p).unwrap();
+        let (kind, e) = finish(&s, &state_at(&s, duration(&s, &p), &p), &p).unwrap();
         assert_eq!(kind, Transition::SlideToRoll);
         let expect = 5.0 / 7.0 * v0 + 2.0 / 7.0 * p.ball_radius * w0.cross(&Vec3::z());
         assert!((e.vel - expect).norm() < 1e-12);
@@ -320,7 +347,7 @@ mod tests {
         let v0 = 1.0;
         let w = -2.5 * v0 / p.ball_radius;
         let s = ball(Vec3::new(v0, 0.0, 0.0), Vec3::new(0.0, w, 20.0), &p);
-        let (kind, e) = finish(&state_at(&s, duration(&s, &p), &p), &p).unwrap();
+        let (kind, e) = finish(&s, &state_at(&s, duration(&s, &p), &p), &p).unwrap();
         assert_eq!(kind, Transition::SlideToSpin);
         assert_eq!(e.vel, Vec3::zeros());
         assert_eq!(e.motion, Motion::Spinning);

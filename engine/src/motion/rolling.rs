@@ -1,7 +1,11 @@
 //! Rolling: no slip at the cloth (v = w x R e_z); rolling resistance decelerates the ball at
 //! mu_r g along a straight line (thesis §2.4.2, eq. V = V0 - mu_r g t; mu_r from §5.1.1.1).
-//! Sidespin decays on its own ([`super::spinning`]).
+//! Sidespin decays on its own ([`super::spinning`]). A force through the centre of a rolling
+//! ball (the bed's tilt, the nap, [`super::cloth`]) accelerates it at 5/7 of force / M, the
+//! cloth's static friction keeping it rolling; the law then holds its accelerations over
+//! short segments.
 
+use super::cloth;
 use super::spinning::sidespin_at;
 use crate::ball::{BallState, Vec3};
 use crate::params::Params;
@@ -12,27 +16,68 @@ fn direction(s: &BallState) -> Vec3 {
     if n > 0.0 { v / n } else { Vec3::zeros() }
 }
 
-/// Acceleration of the centre while rolling, m/s^2.
-pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
-    -p.mu_roll * p.g * direction(s)
+/// Acceleration with the ball moving along the unit vector `d`.
+fn acceleration_along(d: Vec3, p: &Params) -> Vec3 {
+    -p.mu_roll * p.g * d + 5.0 / 7.0 * cloth::body_acceleration(p, d)
 }
 
-/// How long rolling lasts: |v0| / (mu_r g) (infinite without rolling resistance).
-pub fn duration(s: &BallState, p: &Params) -> f64 {
-    if p.mu_roll > 0.0 {
-        s.vel.xy().norm() / (p.mu_roll * p.g)
+/// The law's direction of travel: the starting one, or with the effects of [`cloth`] on the
+/// one at the middle of the coming segment (the midpoint rule, second order in its length).
+fn law_direction(s: &BallState, p: &Params) -> Vec3 {
+    let d0 = direction(s);
+    if !cloth::active(p) {
+        return d0;
+    }
+    let a0 = acceleration_along(d0, p);
+    let half = 0.5 * end_along(s, d0, a0).min(cloth::SEGMENT);
+    let v = s.vel + half * a0;
+    let v = Vec3::new(v.x, v.y, 0.0);
+    if v.dot(&d0) > 0.0 { v.normalize() } else { d0 }
+}
+
+/// Acceleration of the centre while rolling, m/s^2.
+pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
+    acceleration_along(law_direction(s, p), p)
+}
+
+/// Time at which the velocity along `d` is used up under acceleration `a`.
+fn end_along(s: &BallState, d: Vec3, a: Vec3) -> f64 {
+    let rate = -a.dot(&d);
+    if rate > 0.0 {
+        s.vel.dot(&d).max(0.0) / rate
     } else {
         f64::INFINITY
     }
 }
 
+/// Time at which the speed along the law's direction is used up.
+fn natural_end(s: &BallState, p: &Params) -> f64 {
+    let d = law_direction(s, p);
+    end_along(s, d, acceleration_along(d, p))
+}
+
+/// How long this law holds: until the ball stops, |v0| / (mu_r g) (infinite without rolling
+/// resistance), or for at most one segment with the effects of [`cloth`] on.
+pub fn duration(s: &BallState, p: &Params) -> f64 {
+    let end = natural_end(s, p);
+    if cloth::active(p) {
+        end.min(cloth::SEGMENT)
+    } else {
+        end
+    }
+}
+
+/// True when the law ends because the ball stops (not at a segment's end).
+pub fn ends_stopped(s: &BallState, p: &Params) -> bool {
+    !cloth::active(p) || natural_end(s, p) <= cloth::SEGMENT
+}
+
 /// State after `dt` seconds of rolling (valid for 0 <= dt <= [`duration`]).
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
-    let d = direction(s);
-    let f = p.mu_roll * p.g;
+    let a = acceleration(s, p);
     let mut out = *s;
-    out.pos = s.pos + s.vel * dt - 0.5 * f * dt * dt * d;
-    out.vel = s.vel - f * dt * d;
+    out.pos = s.pos + s.vel * dt + 0.5 * dt * dt * a;
+    out.vel = s.vel + dt * a;
     let w = Vec3::z().cross(&out.vel) / p.ball_radius;
     out.spin = Vec3::new(w.x, w.y, sidespin_at(s.spin.z, dt, p.sidespin_decel));
     out

@@ -3,8 +3,10 @@
 //!   dv/dt = -mu_s g u^,   dw_xy/dt = (5 mu_s g / 2R) (e_z x u^),
 //! so u keeps its direction and shrinks at (7/2) mu_s g: sliding lasts 2|u0| / (7 mu_s g) and
 //! the centre follows a parabola (the massé curve, thesis §6.1.5). Sidespin decays on its own
-//! ([`super::spinning`]).
+//! ([`super::spinning`]). With the effects of [`super::cloth`] on, the slip no longer keeps
+//! its direction; the law then holds its accelerations over short segments.
 
+use super::cloth;
 use super::spinning::sidespin_at;
 use crate::ball::{BallState, Vec3};
 use crate::params::Params;
@@ -16,28 +18,85 @@ pub fn slip_direction(s: &BallState, p: &Params) -> Vec3 {
     if n > 0.0 { u / n } else { Vec3::zeros() }
 }
 
-/// Acceleration of the centre while sliding, m/s^2.
-pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
-    -p.mu_slide * p.g * slip_direction(s, p)
+/// The law's constants from its starting state: slip direction, friction coefficient, the
+/// extra acceleration of the bed and nap, and the time at which the slip along `uhat` is used
+/// up. With the effects of [`cloth`] on they are taken at the middle of the coming segment
+/// (the midpoint rule, second order in the segment's length).
+struct Law {
+    uhat: Vec3,
+    mu: f64,
+    extra: Vec3,
+    natural_end: f64,
 }
 
-/// How long sliding lasts: 2|u0| / (7 mu_s g) (infinite on frictionless cloth).
-pub fn duration(s: &BallState, p: &Params) -> f64 {
-    let u = s.slip(p.ball_radius).norm();
-    if p.mu_slide > 0.0 {
-        2.0 * u / (7.0 * p.mu_slide * p.g)
-    } else {
-        f64::INFINITY
+fn law(s: &BallState, p: &Params) -> Law {
+    let u0 = s.slip(p.ball_radius);
+    let v0 = Vec3::new(s.vel.x, s.vel.y, 0.0);
+    let at = |u: Vec3, v: Vec3| {
+        let uhat = u.try_normalize(0.0).unwrap_or(Vec3::zeros());
+        let vhat = v.try_normalize(0.0).unwrap_or(Vec3::zeros());
+        let mu = cloth::mu_slide(p, u.norm());
+        let extra = cloth::body_acceleration(p, vhat);
+        // The slip along u^ shrinks at 7/2 mu g less the extra acceleration's share.
+        let rate = 3.5 * mu * p.g - extra.dot(&uhat);
+        let natural_end = if rate > 0.0 {
+            u0.dot(&uhat) / rate
+        } else {
+            f64::INFINITY
+        };
+        Law {
+            uhat,
+            mu,
+            extra,
+            natural_end,
+        }
+    };
+    let start = at(u0, v0);
+    if !cloth::active(p) {
+        return start;
     }
+    let half = 0.5 * start.natural_end.min(cloth::SEGMENT);
+    let dv = half * (start.extra - start.mu * p.g * start.uhat);
+    let du = dv - half * 2.5 * start.mu * p.g * start.uhat;
+    let mid = at(u0 + du, v0 + dv);
+    // Keep the start's direction if the slip would vanish before mid-segment.
+    if mid.uhat == Vec3::zeros() {
+        start
+    } else {
+        mid
+    }
+}
+
+/// Acceleration of the centre while sliding, m/s^2.
+pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
+    let l = law(s, p);
+    -l.mu * p.g * l.uhat + l.extra
+}
+
+/// How long this law holds: until the slip is used up, 2|u0| / (7 mu_s g) (infinite on
+/// frictionless cloth), or for at most one segment with the effects of [`cloth`] on.
+pub fn duration(s: &BallState, p: &Params) -> f64 {
+    let end = law(s, p).natural_end;
+    if cloth::active(p) {
+        end.min(cloth::SEGMENT)
+    } else {
+        end
+    }
+}
+
+/// True when the law ends because the slip is used up (not at a segment's end).
+pub fn ends_rolling(s: &BallState, p: &Params) -> bool {
+    let l = law(s, p);
+    !cloth::active(p) || l.natural_end <= cloth::SEGMENT
 }
 
 /// State after `dt` seconds of sliding (valid for 0 <= dt <= [`duration`]).
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
-    let uhat = slip_direction(s, p);
-    let f = p.mu_slide * p.g;
+    let l = law(s, p);
+    let (uhat, f) = (l.uhat, l.mu * p.g);
     let mut out = *s;
-    out.pos = s.pos + s.vel * dt - 0.5 * f * dt * dt * uhat;
-    out.vel = s.vel - f * dt * uhat;
+    out.pos = s.pos + s.vel * dt + 0.5 * dt * dt * (l.extra - f * uhat);
+    out.vel = s.vel + dt * (l.extra - f * uhat);
     let dw = (2.5 * f / p.ball_radius * dt) * Vec3::z().cross(&uhat);
     out.spin.x = s.spin.x + dw.x;
     out.spin.y = s.spin.y + dw.y;

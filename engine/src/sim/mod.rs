@@ -488,8 +488,9 @@ impl Sim<'_> {
                         j.name.clone(),
                     )
                 };
+                let vn = -s.vel.dot(&normal);
                 let pe = Params {
-                    e_cushion: crate::impact::restitution_floor(p.e_cushion, -s.vel.dot(&normal)),
+                    e_cushion: crate::impact::restitution_floor(p.e_cushion_at(vn), vn),
                     ..p
                 };
                 let s2 = self
@@ -504,7 +505,7 @@ impl Sim<'_> {
                     vec![s],
                     vec![motion::settle(s2, &p)],
                     Some(name),
-                    Some(-s.vel.dot(&normal)),
+                    Some(vn),
                 )
             }
             Candidate::Pocket => {
@@ -524,7 +525,7 @@ impl Sim<'_> {
             }
             Candidate::Transition => {
                 let s = self.current(e.a);
-                let Some((t, s2)) = motion::finish(&s, &p) else {
+                let Some((t, s2)) = motion::finish(&self.balls[e.a].state, &s, &p) else {
                     return Ok(());
                 };
                 (
@@ -563,6 +564,12 @@ impl Sim<'_> {
                 }
                 self.schedule_pair(i, j);
             }
+        }
+        if kind == EventKind::Transition(motion::Transition::Refresh) {
+            // A renewal of a law's accelerations, not a physical event: the track keeps the
+            // segment, the event list does not.
+            self.stats.refreshes += 1;
+            return Ok(());
         }
         self.events.push(Event {
             t: self.now,

@@ -55,6 +55,9 @@ pub struct Stats {
     pub stale: usize,
     /// Candidates computed.
     pub candidates: usize,
+    /// Law segments renewed with the cloth's extra effects on (counted in `events`, not
+    /// listed among the shot's events).
+    pub refreshes: usize,
 }
 
 /// A simulated shot.
