@@ -52,44 +52,7 @@ pub struct Request {
 
 /// Applies `NAME=VALUE` overrides to the default parameters.
 pub fn parameters(overrides: &[String]) -> anyhow::Result<Params> {
-    let mut p = Params::default();
-    let mut radius_given = false;
-    let mut height_given = false;
-    for o in overrides {
-        let (name, value) = o
-            .split_once('=')
-            .with_context(|| format!("--param {o}: expected NAME=VALUE"))?;
-        let v: f64 = value
-            .trim()
-            .parse()
-            .with_context(|| format!("--param {o}: {value} is not a number"))?;
-        let slot = match name.trim() {
-            "g" => &mut p.g,
-            "ball_mass" => &mut p.ball_mass,
-            "ball_radius" => {
-                radius_given = true;
-                &mut p.ball_radius
-            }
-            "mu_slide" => &mut p.mu_slide,
-            "mu_roll" => &mut p.mu_roll,
-            "sidespin_decel" => &mut p.sidespin_decel,
-            "e_ball" => &mut p.e_ball,
-            "mu_ball" => &mut p.mu_ball,
-            "e_cushion" => &mut p.e_cushion,
-            "mu_cushion" => &mut p.mu_cushion,
-            "cushion_height" => {
-                height_given = true;
-                &mut p.cushion_height
-            }
-            other => bail!("--param {o}: unknown parameter `{other}`"),
-        };
-        *slot = v;
-    }
-    if radius_given && !height_given {
-        p.cushion_height = 1.4 * p.ball_radius;
-    }
-    p.validate().map_err(|e| anyhow::anyhow!("--param {e}"))?;
-    Ok(p)
+    crate::scene::override_params(Params::default(), overrides)
 }
 
 /// One ball's state, as reported.
@@ -326,7 +289,7 @@ pub fn text(doc: &Value) -> String {
 
 /// Loads a TrueType font for the plot's text from the system (DejaVu Sans, or any font
 /// fontconfig would offer under /usr/share/fonts).
-fn register_font() -> anyhow::Result<()> {
+pub(crate) fn register_font() -> anyhow::Result<()> {
     let candidates = [
         "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
         "/usr/share/fonts/TTF/DejaVuSans.ttf",

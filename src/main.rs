@@ -1,8 +1,7 @@
 //! `snooker`: simulate snooker shots from scene files.
 
-use anyhow::Context;
 use clap::{Parser, Subcommand};
-use snooker::{impact_cmd, output, scene, validate_cmd};
+use snooker::{discrepancy_cmd, impact_cmd, output, scene, validate_cmd};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -64,6 +63,61 @@ enum Command {
         #[arg(long)]
         convergence: bool,
     },
+    /// Make measured-like data with effects hidden in it: the scene simulated under its model
+    /// plus the hidden effects, filmed with camera noise and dropped frames.
+    Synth {
+        /// The scene the shot starts from (its model is the one without the hidden effects).
+        scene: PathBuf,
+        /// Hide an effect: a catalogue id with its value(s), e.g. table_slope=0.001,-0.0005,
+        /// or one outside the catalogue (wobble=AMPLITUDE_M). Repeatable.
+        #[arg(long = "effect", value_name = "NAME=VALUE[,VALUE]")]
+        effects: Vec<String>,
+        /// Override a parameter of the truth model, NAME=VALUE (repeatable).
+        #[arg(long = "param", value_name = "NAME=VALUE")]
+        params: Vec<String>,
+        /// Camera frames per second.
+        #[arg(long, default_value_t = 100.0)]
+        fps: f64,
+        /// Camera position noise, 1-sigma per coordinate, millimetres.
+        #[arg(long, value_name = "MM", default_value_t = 0.5)]
+        noise: f64,
+        /// Seed of the noise and the dropped frames.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Share of frames lost.
+        #[arg(long, default_value_t = 0.02)]
+        drop: f64,
+        /// Longest recording, s.
+        #[arg(long, default_value_t = 20.0)]
+        duration: f64,
+        /// Initial quantities the data file asks to fit, comma-separated (default: the
+        /// strike's speed, or every moving ball's vel and spin).
+        #[arg(long, value_delimiter = ',', value_name = "LIST")]
+        fit: Option<Vec<String>>,
+        /// The data file to write (DATA.toml; the tracks DATA.csv and the scene
+        /// DATA.scene.toml go beside it).
+        #[arg(short = 'o', long = "out", value_name = "DATA.toml")]
+        out: PathBuf,
+    },
+    /// Find where simulation and measurement disagree, name the missing physical effects from
+    /// the catalogue, add them and show the gap shrink.
+    Discrepancy {
+        /// The measured data file (TOML; see the README).
+        data: PathBuf,
+        /// A model file ([params] and [models] as in a scene) to start from instead of the
+        /// scenes' own model.
+        #[arg(long, value_name = "FILE")]
+        model: Option<PathBuf>,
+        /// Write the full report (JSON, summary, plots) into this directory.
+        #[arg(long, value_name = "DIR")]
+        report: Option<PathBuf>,
+        /// Write the JSON report to this file.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// Print nothing but errors.
+        #[arg(long, short)]
+        quiet: bool,
+    },
 }
 
 /// The incoming ball of an impact (spins in units of V/R; 1 = rolling).
@@ -104,22 +158,6 @@ enum ImpactKind {
 const BAD_INPUT: u8 = 2;
 /// Exit code for a simulation that could not finish.
 const SIM_FAILED: u8 = 1;
-
-/// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing
-/// is left half-written.
-fn write_atomic(path: &Path, text: &str) -> anyhow::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .context("the output path has no file name")?;
-    let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
-    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
-}
 
 fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> ExitCode {
     let loaded = match &scene_path {
@@ -170,7 +208,7 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
             if writeln!(stdout, "{text}").is_err() {
                 return ExitCode::from(SIM_FAILED);
             }
-        } else if let Err(e) = write_atomic(Path::new(&out), &(text + "\n")) {
+        } else if let Err(e) = output::write_atomic(Path::new(&out), (text + "\n").as_bytes()) {
             eprintln!("error: --json {out}: {e:#}");
             return ExitCode::from(BAD_INPUT);
         } else if !quiet {
@@ -243,6 +281,68 @@ fn validate(req: validate_cmd::Request) -> ExitCode {
     }
 }
 
+fn synth(req: discrepancy_cmd::SynthRequest) -> ExitCode {
+    match discrepancy_cmd::synth(&req) {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(BAD_INPUT)
+        }
+    }
+}
+
+fn discrepancy(req: discrepancy_cmd::Request, quiet: bool) -> ExitCode {
+    let m = match discrepancy_cmd::load(&req) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            return ExitCode::from(BAD_INPUT);
+        }
+    };
+    for (path, what) in [(&req.json, "--json"), (&req.report, "--report")] {
+        if let Some(p) = path
+            && p.parent()
+                .is_some_and(|d| !d.as_os_str().is_empty() && !d.is_dir())
+        {
+            eprintln!(
+                "error: {what} {}: the directory does not exist",
+                p.display()
+            );
+            return ExitCode::from(BAD_INPUT);
+        }
+    }
+    let outcome = match discrepancy_cmd::run(&m) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("error: {}: {e:#}", req.data.display());
+            return ExitCode::from(SIM_FAILED);
+        }
+    };
+    if !quiet {
+        print!(
+            "{}",
+            snooker_validation::discrepancy::report::text(&m, &outcome)
+        );
+    }
+    match discrepancy_cmd::write(&req, &m, &outcome) {
+        Ok(files) => {
+            if !quiet {
+                for f in files {
+                    println!("wrote {}", f.display());
+                }
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(BAD_INPUT)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -254,6 +354,46 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Simulate { scene, json, quiet } => simulate(scene, json, quiet),
+        Command::Synth {
+            scene,
+            effects,
+            params,
+            fps,
+            noise,
+            seed,
+            drop,
+            duration,
+            fit,
+            out,
+        } => synth(discrepancy_cmd::SynthRequest {
+            scene,
+            effects,
+            params,
+            camera: snooker_validation::discrepancy::synth::Camera {
+                fps,
+                noise: noise * 1e-3,
+                drop_rate: drop,
+                seed,
+                max_duration: duration,
+            },
+            fit,
+            out,
+        }),
+        Command::Discrepancy {
+            data,
+            model,
+            report,
+            json,
+            quiet,
+        } => discrepancy(
+            discrepancy_cmd::Request {
+                data,
+                model,
+                report,
+                json,
+            },
+            quiet,
+        ),
         Command::Impact {
             which,
             json,

@@ -184,3 +184,20 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
     }
     out
 }
+
+/// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing
+/// is left half-written.
+pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
+    use anyhow::Context;
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let name = path
+        .file_name()
+        .context("the output path has no file name")?;
+    let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
+    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}

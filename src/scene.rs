@@ -49,6 +49,8 @@ pub struct Scene {
     pub options: SimOptions,
     /// The cue strike, if the scene has one: which ball and what it did.
     pub strike: Option<(String, Cue, Strike)>,
+    /// The struck ball's state before the strike.
+    pub before_strike: Option<BallState>,
 }
 
 #[derive(Deserialize, Default)]
@@ -91,7 +93,12 @@ macro_rules! param_spec {
         impl ParamSpec {
             /// Defaults overridden by the values given.
             fn apply(&self) -> Params {
-                let mut p = Params::default();
+                self.apply_to(Params::default())
+            }
+
+            /// `base` overridden by the values given.
+            fn apply_to(&self, base: Params) -> Params {
+                let mut p = base;
                 if let Some(r) = self.ball_radius {
                     // The nose height follows the ball unless given: h = 7R/5 (thesis §6.2).
                     p.cushion_height = 1.4 * r;
@@ -185,8 +192,9 @@ fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
-/// Parses and validates scene text; `file` names it in error messages.
-pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+/// Deserializes TOML `text` into `T`, with errors naming `file`, the key, line and column.
+/// Shared by every TOML input of the command line (scenes, models, measured data).
+pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, SceneError> {
     let fail = |key: &str, reason: String| SceneError {
         file: file.to_string(),
         key: key.to_string(),
@@ -200,7 +208,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         };
         fail("", reason)
     })?;
-    let spec: SceneFile = serde_path_to_error::deserialize(de).map_err(|e| {
+    serde_path_to_error::deserialize(de).map_err(|e| {
         let key = e.path().to_string();
         let inner = e.into_inner();
         let mut reason = inner.message().trim().to_string();
@@ -208,8 +216,79 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
             reason = format!("{reason} (line {l}, column {c})");
         }
         fail(if key == "." { "" } else { &key }, reason)
+    })
+}
+
+/// Parses and validates scene text; `file` names it in error messages.
+pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+    build(from_toml(text, file)?, file)
+}
+
+/// Applies `NAME=VALUE` overrides (`--param` on the command line, the scene files' names) to
+/// `base`, then validates the result. As in a scene, the nose height follows a new ball
+/// radius unless given too (h = 7R/5, thesis §6.2).
+pub fn override_params(base: Params, overrides: &[String]) -> anyhow::Result<Params> {
+    use anyhow::Context;
+    let mut p = base;
+    let given = |n: &str| {
+        overrides
+            .iter()
+            .any(|x| x.split_once('=').is_some_and(|(k, _)| k.trim() == n))
+    };
+    for o in overrides {
+        let (name, value) = o
+            .split_once('=')
+            .with_context(|| format!("--param {o}: expected NAME=VALUE"))?;
+        let v: f64 = value
+            .trim()
+            .parse()
+            .with_context(|| format!("--param {o}: {value} is not a number"))?;
+        let slot = p.field_mut(name.trim()).with_context(|| {
+            format!(
+                "--param {o}: unknown parameter `{}` (one of {})",
+                name.trim(),
+                Params::default().named().map(|e| e.0).join(", ")
+            )
+        })?;
+        *slot = v;
+    }
+    if given("ball_radius") && !given("cushion_height") {
+        p.cushion_height = 1.4 * p.ball_radius;
+    }
+    p.validate().map_err(|e| anyhow::anyhow!("--param {e}"))?;
+    Ok(p)
+}
+
+/// A model file: `[params]` and `[models]` tables as in a scene, nothing else.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct ModelFile {
+    #[serde(default)]
+    params: ParamSpec,
+    #[serde(default)]
+    models: ModelSpec,
+}
+
+/// Parses a model file (TOML with `[params]` and `[models]` as in a scene) and applies it on
+/// top of `params` and `models`; `file` names it in error messages.
+pub fn parse_model(
+    text: &str,
+    file: &str,
+    params: Params,
+    models: Models,
+) -> Result<(Params, Models), SceneError> {
+    let spec: ModelFile = from_toml(text, file)?;
+    let p = spec.params.apply_to(params);
+    p.validate().map_err(|e| SceneError {
+        file: file.to_string(),
+        key: format!("params.{}", e.name),
+        reason: e.reason,
     })?;
-    build(spec, file)
+    let m = Models {
+        ball_ball: spec.models.ball_ball.unwrap_or(models.ball_ball),
+        cushion: spec.models.cushion.unwrap_or(models.cushion),
+    };
+    Ok((p, m))
 }
 
 fn check_finite(key: &str, values: &[f64], file: &str) -> Result<(), SceneError> {
@@ -359,6 +438,7 @@ fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
     }
 
     let mut strike = None;
+    let mut before_strike = None;
     if let Some(c) = &spec.cue {
         let Some(i) = balls.iter().position(|b| b.id == c.ball) else {
             return Err(fail(
@@ -374,6 +454,7 @@ fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
         };
         let s = cue::strike(&balls[i].state, &cue, &params)
             .map_err(|e| fail(&format!("cue.{}", e.key), e.reason))?;
+        before_strike = Some(balls[i].state);
         balls[i].state = s.state;
         strike = Some((c.ball.clone(), cue, s));
     }
@@ -436,6 +517,7 @@ fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
         setup,
         options,
         strike,
+        before_strike,
     })
 }
 

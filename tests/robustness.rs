@@ -321,3 +321,26 @@ fn the_horizon_stops_a_shot_cleanly() {
     assert_eq!(shot.duration, 1.0);
     assert!(shot.final_states()[0].motion == Motion::Rolling);
 }
+
+#[test]
+fn the_horizon_ends_a_shot_whose_next_event_lies_beyond_it() {
+    // Without rolling resistance the roll never ends, and the cushion is reached only after
+    // the horizon: nothing is left to happen before it, which is not a runaway.
+    let p = Params {
+        mu_roll: 0.0,
+        ..Params::default()
+    };
+    let mut s = setup(
+        Table::snooker(&Default::default()),
+        vec![rolling("cue", 1.0, 0.9, Vec3::new(0.5, 0.0, 0.0), &p)],
+    );
+    s.params = p;
+    let opts = SimOptions {
+        horizon: Some(1.0),
+        ..SimOptions::default()
+    };
+    let shot = simulate(&s, &opts).unwrap();
+    assert_eq!(shot.ending, snooker_engine::Ending::Horizon);
+    assert_eq!(shot.duration, 1.0);
+    assert!((shot.final_states()[0].pos.x - 1.5).abs() < 1e-12);
+}

@@ -157,6 +157,36 @@ impl Params {
         (self.e_cushion - self.e_cushion_falloff * (v - self.e_cushion_knee).max(0.0)).max(0.0)
     }
 
+    /// The parameter of this scene-file name, to be set (None for an unknown name).
+    pub fn field_mut(&mut self, name: &str) -> Option<&mut f64> {
+        Some(match name {
+            "g" => &mut self.g,
+            "ball_mass" => &mut self.ball_mass,
+            "ball_radius" => &mut self.ball_radius,
+            "mu_slide" => &mut self.mu_slide,
+            "mu_roll" => &mut self.mu_roll,
+            "sidespin_decel" => &mut self.sidespin_decel,
+            "e_ball" => &mut self.e_ball,
+            "mu_ball" => &mut self.mu_ball,
+            "e_cushion" => &mut self.e_cushion,
+            "mu_cushion" => &mut self.mu_cushion,
+            "cushion_height" => &mut self.cushion_height,
+            "cue_mass" => &mut self.cue_mass,
+            "cue_tip_radius" => &mut self.cue_tip_radius,
+            "cue_tip_restitution" => &mut self.cue_tip_restitution,
+            "cue_endmass" => &mut self.cue_endmass,
+            "miscue_limit" => &mut self.miscue_limit,
+            "slope_x" => &mut self.slope_x,
+            "slope_y" => &mut self.slope_y,
+            "nap_drift" => &mut self.nap_drift,
+            "mu_slide_low" => &mut self.mu_slide_low,
+            "slide_speed_scale" => &mut self.slide_speed_scale,
+            "e_cushion_falloff" => &mut self.e_cushion_falloff,
+            "e_cushion_knee" => &mut self.e_cushion_knee,
+            _ => return None,
+        })
+    }
+
     /// The parameters as (name, value) pairs, with their scene-file names.
     pub fn named(&self) -> [(&'static str, f64); 23] {
         [
@@ -297,6 +327,18 @@ impl Params {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_named_parameter_can_be_set_by_name() {
+        let p = Params::default();
+        for (k, (name, _)) in p.named().iter().enumerate() {
+            let mut q = p;
+            *q.field_mut(name).unwrap() = 1000.0 + k as f64;
+            assert_eq!(q.named()[k].1, 1000.0 + k as f64, "{name}");
+            assert_eq!(q.named().iter().filter(|(_, v)| *v >= 1000.0).count(), 1);
+        }
+        assert!(Params::default().field_mut("mu_slid").is_none());
+    }
 
     #[test]
     fn defaults_are_valid_and_match_the_thesis() {

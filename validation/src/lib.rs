@@ -10,6 +10,7 @@
 pub mod compare;
 pub mod convergence;
 pub mod crosscheck;
+pub mod discrepancy;
 pub mod ensemble;
 pub mod nose;
 pub mod rapier_run;

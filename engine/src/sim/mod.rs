@@ -431,6 +431,13 @@ impl Sim<'_> {
             self.stats.events += 1;
             self.resolve(&e)?;
         }
+        // Nothing left to happen before the horizon (candidates are only searched up to it).
+        if let Some(h) = self.opts.horizon
+            && self.balls.iter().any(|b| b.state.motion.is_moving())
+        {
+            self.now = self.now.max(h);
+            return Ok(Ending::Horizon);
+        }
         // Nothing left to happen: the laws in force never end, so no ball moves.
         if self.balls.iter().any(|b| b.state.motion.is_moving()) {
             return Err(SimError::DidNotStop {

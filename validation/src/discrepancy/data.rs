@@ -1,0 +1,360 @@
+//! Measured data as the workflow sees it: shots, each with the setup it starts from, the
+//! tracked centroids, post-event observables, and which initial quantities are unknown.
+//! (Reading them from files is the command line's job: `src/measured.rs`.)
+
+use serde::{Deserialize, Serialize};
+use snooker_engine::cue::Cue;
+use snooker_engine::{BallState, EventKind, Models, Params, Setup};
+
+/// The physics a shot is simulated with: parameters and impact models.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Model {
+    /// Physical parameters.
+    pub params: Params,
+    /// Impact models.
+    pub models: Models,
+}
+
+/// One tracked centroid: ball `ball` seen at (x, y) at time `t`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Sample {
+    /// Time since the shot's start, s.
+    pub t: f64,
+    /// Index of the ball in the shot's setup.
+    pub ball: usize,
+    /// Measured centre on the cloth, m.
+    pub pos: [f64; 2],
+}
+
+/// A quantity measured on one ball at one moment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// Horizontal speed, m/s.
+    Speed,
+    /// Direction of horizontal travel from +x, anticlockwise, degrees.
+    Heading,
+    /// Velocity along x, m/s.
+    VelX,
+    /// Velocity along y, m/s.
+    VelY,
+    /// Angular velocity about the vertical, rad/s.
+    SpinZ,
+}
+
+impl Quantity {
+    /// Every quantity with its data-file name.
+    pub const ALL: [(Quantity, &'static str); 5] = [
+        (Quantity::Speed, "speed"),
+        (Quantity::Heading, "heading"),
+        (Quantity::VelX, "vel_x"),
+        (Quantity::VelY, "vel_y"),
+        (Quantity::SpinZ, "spin_z"),
+    ];
+
+    /// The data-file name.
+    pub fn name(self) -> &'static str {
+        Self::ALL
+            .iter()
+            .find(|(q, _)| *q == self)
+            .map_or("", |e| e.1)
+    }
+
+    /// The quantity's value for a ball state.
+    pub fn of(self, s: &BallState) -> f64 {
+        match self {
+            Quantity::Speed => s.vel.xy().norm(),
+            Quantity::Heading => s.vel.y.atan2(s.vel.x).to_degrees(),
+            Quantity::VelX => s.vel.x,
+            Quantity::VelY => s.vel.y,
+            Quantity::SpinZ => s.spin.z,
+        }
+    }
+}
+
+/// When an observable is taken, relative to the `n`-th event of `kind` involving the ball
+/// (counted from 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Moment {
+    /// Just after the event.
+    After {
+        /// Event kind.
+        kind: EventKind,
+        /// Which one, from 1.
+        n: usize,
+    },
+    /// When the ball next rolls after the event (at once if it rolls straight away): the
+    /// speeds "once sliding has ended" of the thesis's Table I.
+    Rolling {
+        /// Event kind.
+        kind: EventKind,
+        /// Which one, from 1.
+        n: usize,
+    },
+}
+
+impl Moment {
+    /// The event this moment refers to.
+    pub fn event(self) -> (EventKind, usize) {
+        match self {
+            Moment::After { kind, n } | Moment::Rolling { kind, n } => (kind, n),
+        }
+    }
+}
+
+impl std::fmt::Display for Moment {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Moment::After { kind, n } => write!(f, "after:{}#{n}", kind.name()),
+            Moment::Rolling { kind, n } => write!(f, "rolling:{}#{n}", kind.name()),
+        }
+    }
+}
+
+/// A measured post-event quantity with its 1-sigma uncertainty.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Observable {
+    /// Index of the ball in the shot's setup.
+    pub ball: usize,
+    /// What was measured.
+    pub quantity: Quantity,
+    /// When.
+    pub when: Moment,
+    /// Measured value (units of the quantity).
+    pub value: f64,
+    /// 1-sigma uncertainty (units of the quantity).
+    pub sigma: f64,
+}
+
+/// An initial quantity the data does not know well, to be fitted along with the model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Nuisance {
+    /// A ball's starting position (x, y).
+    Pos(usize),
+    /// A ball's starting velocity on the cloth (vx, vy).
+    Vel(usize),
+    /// A ball's starting angular velocity (wx, wy, wz).
+    Spin(usize),
+    /// The cue's speed.
+    StrikeSpeed,
+    /// The cue's heading.
+    StrikeAim,
+    /// The cue tip's offset (side, height).
+    StrikeOffset,
+    /// The cue's elevation.
+    StrikeElevation,
+}
+
+impl Nuisance {
+    /// How many numbers it holds.
+    pub fn len(self) -> usize {
+        match self {
+            Nuisance::Pos(_) | Nuisance::Vel(_) | Nuisance::StrikeOffset => 2,
+            Nuisance::Spin(_) => 3,
+            Nuisance::StrikeSpeed | Nuisance::StrikeAim | Nuisance::StrikeElevation => 1,
+        }
+    }
+
+    /// Always false: every nuisance holds at least one number.
+    pub fn is_empty(self) -> bool {
+        false
+    }
+
+    /// The data-file name (`cue.vel`, `strike.speed`, ...) given the ball ids.
+    pub fn name(self, ids: &[String]) -> String {
+        let ball = |i: usize| ids.get(i).cloned().unwrap_or_default();
+        match self {
+            Nuisance::Pos(i) => format!("{}.pos", ball(i)),
+            Nuisance::Vel(i) => format!("{}.vel", ball(i)),
+            Nuisance::Spin(i) => format!("{}.spin", ball(i)),
+            Nuisance::StrikeSpeed => "strike.speed".into(),
+            Nuisance::StrikeAim => "strike.aim".into(),
+            Nuisance::StrikeOffset => "strike.offset".into(),
+            Nuisance::StrikeElevation => "strike.elevation".into(),
+        }
+    }
+
+    /// The range a value may take in a fit: what a shot can physically have (the fastest
+    /// break is about 10 m/s; a ball spinning at 400 rad/s slips at 10 m/s), so that a
+    /// quantity the first stage of a fit cannot yet pin down does not run off to infinity.
+    pub fn bounds(self) -> Option<(f64, f64)> {
+        match self {
+            Nuisance::Pos(_) => Some((-1.0, 5.0)),
+            Nuisance::Vel(_) => Some((-15.0, 15.0)),
+            Nuisance::Spin(_) => Some((-400.0, 400.0)),
+            Nuisance::StrikeSpeed => Some((0.0, snooker_engine::cue::MAX_CUE_SPEED)),
+            Nuisance::StrikeAim => None,
+            Nuisance::StrikeOffset => Some((-0.02, 0.02)),
+            Nuisance::StrikeElevation => Some((0.0, snooker_engine::cue::MAX_ELEVATION)),
+        }
+    }
+
+    /// Typical size of a change worth resolving: the scale of the fit's finite differences
+    /// and of its parameter scaling (SI units).
+    pub fn scale(self) -> f64 {
+        match self {
+            Nuisance::Pos(_) => 1e-3,
+            Nuisance::Vel(_) => 1e-2,
+            Nuisance::Spin(_) => 1.0,
+            Nuisance::StrikeSpeed => 1e-2,
+            Nuisance::StrikeAim | Nuisance::StrikeElevation => 1e-3,
+            Nuisance::StrikeOffset => 1e-4,
+        }
+    }
+}
+
+/// A cue strike that starts a shot.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StrikeSpec {
+    /// Index of the struck ball.
+    pub ball: usize,
+    /// The ball's state before the strike.
+    pub before: BallState,
+    /// The strike.
+    pub cue: Cue,
+}
+
+/// One measured shot.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ShotData {
+    /// Name (for reports).
+    pub name: String,
+    /// The setup the shot starts from (the strike, if any, applied with the scene's model).
+    pub setup: Setup,
+    /// The strike, if the shot starts with one: it is replayed with the model being tested
+    /// (squirt depends on the cue's end mass).
+    pub strike: Option<StrikeSpec>,
+    /// Tracked centroids, in time order.
+    pub samples: Vec<Sample>,
+    /// Post-event quantities.
+    pub observables: Vec<Observable>,
+    /// Initial quantities to fit.
+    pub nuisances: Vec<Nuisance>,
+}
+
+impl ShotData {
+    /// The ball ids, in setup order.
+    pub fn ids(&self) -> Vec<String> {
+        self.setup.balls.iter().map(|b| b.id.clone()).collect()
+    }
+
+    /// Time of the last sample, s (0 without samples).
+    pub fn last_sample(&self) -> f64 {
+        self.samples.iter().map(|s| s.t).fold(0.0, f64::max)
+    }
+}
+
+/// A measurement: one or more shots sharing a model, and the stated camera noise.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Measurement {
+    /// The shots.
+    pub shots: Vec<ShotData>,
+    /// 1-sigma noise of each tracked coordinate, m.
+    pub noise: f64,
+    /// The model the workflow starts from.
+    pub model: Model,
+}
+
+/// A measurement the workflow cannot use.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataError(pub String);
+
+impl std::fmt::Display for DataError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for DataError {}
+
+impl Measurement {
+    /// Checks what the workflow relies on: a positive noise, something measured, samples and
+    /// observables referring to existing balls with finite values, and strikes and nuisances
+    /// that make sense.
+    pub fn validate(&self) -> Result<(), DataError> {
+        let bad = |m: String| Err(DataError(m));
+        if !(self.noise.is_finite() && self.noise > 0.0) {
+            return bad(format!(
+                "noise must be a positive number of metres, got {}",
+                self.noise
+            ));
+        }
+        if self.shots.is_empty() {
+            return bad("the measurement has no shots".into());
+        }
+        if self
+            .shots
+            .iter()
+            .all(|s| s.samples.is_empty() && s.observables.is_empty())
+        {
+            return bad("the measurement has neither tracks nor observables".into());
+        }
+        for shot in &self.shots {
+            let n = shot.setup.balls.len();
+            let name = &shot.name;
+            for s in &shot.samples {
+                if s.ball >= n || !(s.t.is_finite() && s.t >= 0.0) {
+                    return bad(format!(
+                        "shot {name}: a sample at t = {} refers to ball {} of {n}",
+                        s.t, s.ball
+                    ));
+                }
+                if !s.pos.iter().all(|v| v.is_finite()) {
+                    return bad(format!(
+                        "shot {name}: a sample at t = {} is not finite",
+                        s.t
+                    ));
+                }
+            }
+            for o in &shot.observables {
+                if o.ball >= n || !o.value.is_finite() || !(o.sigma.is_finite() && o.sigma > 0.0) {
+                    return bad(format!(
+                        "shot {name}: observable {} {} of ball {} needs a finite value and a \
+                         positive sigma",
+                        o.quantity.name(),
+                        o.when,
+                        o.ball
+                    ));
+                }
+            }
+            for nu in &shot.nuisances {
+                match *nu {
+                    Nuisance::Pos(i) | Nuisance::Vel(i) | Nuisance::Spin(i) if i >= n => {
+                        return bad(format!("shot {name}: fitted quantity refers to ball {i}"));
+                    }
+                    Nuisance::StrikeSpeed
+                    | Nuisance::StrikeAim
+                    | Nuisance::StrikeOffset
+                    | Nuisance::StrikeElevation
+                        if shot.strike.is_none() =>
+                    {
+                        return bad(format!(
+                            "shot {name}: {} is to be fitted but the scene has no [cue] strike",
+                            nu.name(&shot.ids())
+                        ));
+                    }
+                    _ => {}
+                }
+            }
+            if let Some(st) = &shot.strike
+                && st.ball >= n
+            {
+                return bad(format!(
+                    "shot {name}: the strike refers to ball {}",
+                    st.ball
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Number of residuals: two per sample, one per observable.
+    pub fn residual_count(&self) -> usize {
+        self.shots
+            .iter()
+            .map(|s| 2 * s.samples.len() + s.observables.len())
+            .sum()
+    }
+}
