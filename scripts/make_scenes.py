@@ -94,10 +94,19 @@ LENGTH = 3.569        # playing-area length between the cushion noses, m (WPBSA)
 CONTACT = R * math.sqrt(1 - (0.4 * R / R) ** 2)  # centre-to-nose-line distance at contact, nose at 7R/5
 
 
+def table_i_shots_and_observables(rows):
+    """[[shots]] entries and observable lines of Table I."""
+    shots, lines = [], []
+    for k, row in enumerate(rows, start=1):
+        shots.append(f'\n[[shots]]\nscene = "../../scenes/table-i-{k}.toml"\n')
+        lines.append(f"table-i-{k},cue,speed,rolling:ball_ball#1,{row['cue_speed_after']},{SPEED_SIGMA}")
+        lines.append(f"table-i-{k},red,speed,rolling:ball_ball#1,{row['object_speed_after']},{SPEED_SIGMA}")
+    return shots, lines
+
+
 def write_table_i_data(rows):
-    shots = "".join(
-        f'\n[[shots]]\nscene = "../../scenes/table-i-{k}.toml"\n' for k in range(1, len(rows) + 1)
-    )
+    shots, observables = table_i_shots_and_observables(rows)
+    shots = "".join(shots)
     open("data/discrepancy/table-i.toml", "w").write(f"""# Thesis Table I (appendix III, AJP 2009): five oblique collisions of a rolling cue ball with
 # a resting object ball; measured: both balls' speeds once sliding had ended.
 # Run: snooker discrepancy data/discrepancy/table-i.toml --model data/discrepancy/ideal-ball.toml
@@ -108,10 +117,7 @@ observables = "table-i.csv"
         "# Thesis Table I: speeds once sliding had ended (m/s). sigma: the thesis states none; its",
         "# tracking is good to about 1 mm, a speed over ~0.1 s of frames to about 0.015 m/s.",
         "shot,ball,quantity,when,value,sigma",
-    ]
-    for k, row in enumerate(rows, start=1):
-        lines.append(f"table-i-{k},cue,speed,rolling:ball_ball#1,{row['cue_speed_after']},{SPEED_SIGMA}")
-        lines.append(f"table-i-{k},red,speed,rolling:ball_ball#1,{row['object_speed_after']},{SPEED_SIGMA}")
+    ] + observables
     open("data/discrepancy/table-i.csv", "w").write("\n".join(lines) + "\n")
     open("data/discrepancy/ideal-ball.toml", "w").write("""# The ideal ball-ball model of Wallace & Schroeder (thesis appendix III): frictionless, e = 1.
 # The cloth's friction still acts between the impacts (thesis eqs. 5.2, 5.3).
@@ -132,16 +138,12 @@ def write_head_on_data(rows):
     # ball leaves at 0.95 of the cue ball's incoming speed (only this nominal ratio is published;
     # we take it at five speeds across the range of play). With Table I it pins down e as well as
     # mu_bb, as the thesis's own fit of e and mu_bb used these collisions (6.1.4.3).
-    shots = []
+    shots, observables = table_i_shots_and_observables(rows)
     lines = [
         "# Table I (speeds once sliding had ended) and head-on collisions (object ball speed just",
         "# after the impact = 0.95 x the cue ball's speed just before, thesis 5.1.3.3), m/s.",
         "shot,ball,quantity,when,value,sigma",
-    ]
-    for k, row in enumerate(rows, start=1):
-        shots.append(f'\n[[shots]]\nscene = "../../scenes/table-i-{k}.toml"\n')
-        lines.append(f"table-i-{k},cue,speed,rolling:ball_ball#1,{row['cue_speed_after']},{SPEED_SIGMA}")
-        lines.append(f"table-i-{k},red,speed,rolling:ball_ball#1,{row['object_speed_after']},{SPEED_SIGMA}")
+    ] + observables
     for k, v in enumerate(HEAD_ON_SPEEDS, start=1):
         name = f"head-on-{k}"
         v0 = math.sqrt(v * v + 2 * MU_ROLL_G * RUN_UP)

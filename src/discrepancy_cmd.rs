@@ -275,6 +275,38 @@ pub fn write(req: &Request, m: &Measurement, o: &Outcome) -> anyhow::Result<Vec<
 
 const TITLE: (&str, u32) = ("sans-serif", 20);
 
+/// A chart of this module: f64 axes on a bitmap.
+type Chart<'a, 'b> = plotters::chart::ChartContext<
+    'a,
+    plotters::backend::BitMapBackend<'b>,
+    plotters::coord::cartesian::Cartesian2d<
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+    >,
+>;
+
+/// Draws the legend of the labelled series.
+fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
+    use plotters::style::{BLACK, Color, WHITE};
+    c.configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    Ok(())
+}
+
+/// Writes the picture to `path`.
+fn present(
+    root: &plotters::drawing::DrawingArea<
+        plotters::backend::BitMapBackend<'_>,
+        plotters::coord::Shift,
+    >,
+    path: &Path,
+) -> anyhow::Result<()> {
+    root.present()
+        .with_context(|| format!("cannot write {}", path.display()))
+}
+
 fn rgb(k: snooker_engine::BallKind) -> plotters::style::RGBColor {
     let [r, g, b] = k.rgb();
     // Pale balls (the cue ball, the yellow) are drawn darker to show on white paper.
@@ -349,9 +381,7 @@ fn plot_tracks(
             }
         }
     }
-    root.present()
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    present(&root, path)
 }
 
 /// Distance between measured and simulated centre against time, before and after.
@@ -414,14 +444,9 @@ fn plot_residuals(
         ))?
         .label("RMS of noise alone")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK));
-        c.configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()?;
+        legend(&mut c)?;
     }
-    root.present()
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    present(&root, path)
 }
 
 /// Observables: measured, start model and final model against the speed of the event they
@@ -503,11 +528,6 @@ fn plot_observables(o: &Outcome, path: &Path) -> anyhow::Result<()> {
     )?
     .label("after the named effects")
     .legend(|(x, y)| TriangleMarker::new((x + 10, y), 5, BLUE.filled()));
-    c.configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()?;
-    root.present()
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    legend(&mut c)?;
+    present(&root, path)
 }

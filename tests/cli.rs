@@ -1,22 +1,11 @@
 //! The command line: the default run, the JSON contract, and bad input (one message naming the
 //! file, the key and the reason; exit code 2; nothing written).
 
+mod common;
+
+use common::{snooker, temp_dir};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn snooker(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_snooker"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("snooker-cli-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+use std::path::Path;
 
 #[test]
 fn default_run_prints_a_summary_and_writes_the_contract() {

@@ -3,23 +3,11 @@
 //! cushion rebounds), the report files, and bad input (one message naming the file and the key
 //! or the line and column; exit code 2; nothing written).
 
+mod common;
+
+use common::{snooker, temp_dir};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn snooker(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_snooker"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("snooker-dsc-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+use std::path::Path;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
@@ -107,16 +95,12 @@ fn a_hidden_slope_is_found_from_files_with_a_full_report() {
     assert_eq!(json(&report.join("report.json")), doc);
 }
 
-#[test]
-fn the_thesis_ball_ball_collisions_name_restitution_and_friction() {
-    // Table I alone, from the ideal model: the workflow names ball-ball friction and the mean
-    // speed error falls from the 6.4% of Wallace and Schroeder to 3.7%; restitution then
-    // lowers the BIC by only ~1 with these ten numbers, so it is not named.
-    let dir = temp_dir("table-i");
-    let out = dir.join("t.json");
+/// The workflow's JSON report on `data`, from the ideal ball-ball model.
+fn workflow(dir: &Path, data: &str) -> Value {
+    let out = dir.join("report.json");
     let o = snooker(&[
         "discrepancy",
-        "data/discrepancy/table-i.toml",
+        data,
         "--model",
         "data/discrepancy/ideal-ball.toml",
         "--json",
@@ -124,7 +108,16 @@ fn the_thesis_ball_ball_collisions_name_restitution_and_friction() {
         "-q",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let doc = json(&out);
+    json(&out)
+}
+
+#[test]
+fn the_thesis_ball_ball_collisions_name_restitution_and_friction() {
+    // Table I alone, from the ideal model: the workflow names ball-ball friction and the mean
+    // speed error falls from the 6.4% of Wallace and Schroeder to 3.7%; restitution then
+    // lowers the BIC by only ~1 with these ten numbers, so it is not named.
+    let dir = temp_dir("table-i");
+    let doc = workflow(&dir, "data/discrepancy/table-i.toml");
     assert_eq!(doc["named"], serde_json::json!(["ball_friction"]));
     let before = mean_error(&doc["baseline"], "table-i");
     let after = mean_error(&doc["final"], "table-i");
@@ -133,18 +126,7 @@ fn the_thesis_ball_ball_collisions_name_restitution_and_friction() {
 
     // With the thesis's head-on collisions too (5.1.3.3), which fix e as they did for the
     // thesis's own fit (6.1.4.3): both effects are named and Table I is matched to 3% or less.
-    let out = dir.join("bb.json");
-    let o = snooker(&[
-        "discrepancy",
-        "data/discrepancy/ball-ball.toml",
-        "--model",
-        "data/discrepancy/ideal-ball.toml",
-        "--json",
-        s(&out),
-        "-q",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let doc = json(&out);
+    let doc = workflow(&dir, "data/discrepancy/ball-ball.toml");
     let mut named: Vec<&str> = doc["named"]
         .as_array()
         .unwrap()

@@ -1,14 +1,9 @@
 //! `snooker impact`: the thesis's impact figures from the command line, JSON, plots, bad input.
 
-use serde_json::Value;
-use std::process::{Command, Output};
+mod common;
 
-fn snooker(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_snooker"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use common::snooker;
+use serde_json::Value;
 
 fn json(args: &[&str]) -> Value {
     let mut a = args.to_vec();
