@@ -85,10 +85,26 @@ fn rows<C: Component + Clone>(
     out.into_iter().map(|(_, t, v)| (t, v)).collect()
 }
 
-fn break_off() -> (Scene, Shot) {
-    let scene = scene::parse(scene::DEFAULT_SCENE, scene::DEFAULT_SCENE_FILE).unwrap();
+/// A scene from its text, and its shot.
+fn shot_of(text: &str, file: &str) -> (Scene, Shot) {
+    let scene = scene::parse(text, file).unwrap();
     let shot = simulate(&scene.setup, &scene.options).unwrap();
     (scene, shot)
+}
+
+/// A cue ball sent at `vel` (no spin) and a red at rest, on the table of kind `table`.
+fn cue_and_red(table: &str, cue: [f64; 2], vel: [f64; 2], red: [f64; 2]) -> (Scene, Shot) {
+    let text = format!(
+        "name = \"cue-and-red\"\n[table]\nkind = \"{table}\"\n\
+         [[balls]]\nid = \"cue\"\npos = {cue:?}\nvel = [{}, {}, 0.0]\n\
+         [[balls]]\nid = \"red\"\npos = {red:?}\n",
+        vel[0], vel[1]
+    );
+    shot_of(&text, "cue-and-red.toml")
+}
+
+fn break_off() -> (Scene, Shot) {
+    shot_of(scene::DEFAULT_SCENE, scene::DEFAULT_SCENE_FILE)
 }
 
 /// The instants a recording must hold, built here from their definition: the grid k/rate up
@@ -287,18 +303,7 @@ fn break_off_recording_matches_the_engine() {
 
 #[test]
 fn a_potted_ball_leaves_the_view_and_the_plots() {
-    let text = r#"
-name = "pot"
-[[balls]]
-id = "cue"
-pos = [2.9, 1.1]
-vel = [1.2, 1.22, 0.0]
-[[balls]]
-id = "red"
-pos = [1.0, 0.5]
-"#;
-    let scene = scene::parse(text, "pot.toml").unwrap();
-    let shot = simulate(&scene.setup, &scene.options).unwrap();
+    let (scene, shot) = cue_and_red("snooker", [2.9, 1.1], [1.2, 1.22], [1.0, 0.5]);
     let pot = shot
         .events
         .iter()
@@ -369,20 +374,7 @@ fn table_geometry_is_static_and_complete() {
 
 #[test]
 fn open_table_gets_a_cloth_patch_and_a_slower_rate_fewer_samples() {
-    let text = r#"
-name = "open-stun"
-[table]
-kind = "open"
-[[balls]]
-id = "cue"
-pos = [0.0, 0.0]
-vel = [1.5, 0.0, 0.0]
-[[balls]]
-id = "red"
-pos = [0.8, 0.02]
-"#;
-    let scene = scene::parse(text, "open.toml").unwrap();
-    let shot = simulate(&scene.setup, &scene.options).unwrap();
+    let (scene, shot) = cue_and_red("open", [0.0, 0.0], [1.5, 0.0], [0.8, 0.02]);
     for rate in [50.0, 333.0] {
         let bytes = record::encode(&scene, &shot, &RecordOptions { rate }).unwrap();
         let d = decode(&bytes);

@@ -284,35 +284,35 @@ impl Ball<'_> {
         self.log_motion(id)
     }
 
+    /// The vectors `f` gives at the instants the ball is in play and `f` is not zero (with the
+    /// motion phase there), and per instant how many of them there are (0 or 1).
+    fn shown(&self, f: impl Fn(&BallState) -> Vec3) -> (Vec<(Vec3, Motion)>, Vec<usize>) {
+        let mut shown = Vec::new();
+        let mut counts = Vec::with_capacity(self.states.len());
+        for s in self.states {
+            let v = f(s);
+            let show = s.motion.in_play() && v != Vec3::zeros();
+            if show {
+                shown.push((v, s.motion));
+            }
+            counts.push(usize::from(show));
+        }
+        (shown, counts)
+    }
+
     /// Velocity (coloured by motion phase) and spin arrows from the centre; none for a ball at
     /// rest or pocketed.
     fn log_arrows(&self, id: &str, r: f64) -> Result<(), RecordError> {
-        let vel: Vec<Option<Vec3>> = self
-            .states
-            .iter()
-            .map(|s| (s.motion.in_play() && s.vel != Vec3::zeros()).then_some(s.vel))
-            .collect();
-        let counts: Vec<usize> = vel.iter().map(|v| usize::from(v.is_some())).collect();
+        let (vel, counts) = self.shown(|s| s.vel);
         self.send(
             path(&["balls", id], "velocity"),
             self.times.clone(),
             Arrows3D::update_fields()
-                .with_vectors(vel.iter().flatten().map(|&v| f32x3(v * VELOCITY_SCALE)))
-                .with_colors(
-                    self.states
-                        .iter()
-                        .zip(&vel)
-                        .filter(|(_, v)| v.is_some())
-                        .map(|(s, _)| rgb(motion_color(s.motion))),
-                )
+                .with_vectors(vel.iter().map(|&(v, _)| f32x3(v * VELOCITY_SCALE)))
+                .with_colors(vel.iter().map(|&(_, m)| rgb(motion_color(m))))
                 .columns(counts),
         )?;
-        let spin: Vec<Option<Vec3>> = self
-            .states
-            .iter()
-            .map(|s| (s.motion.in_play() && s.spin != Vec3::zeros()).then_some(s.spin))
-            .collect();
-        let counts: Vec<usize> = spin.iter().map(|v| usize::from(v.is_some())).collect();
+        let (spin, counts) = self.shown(|s| s.spin);
         self.rec
             .log_static(
                 path(&["balls", id], "spin"),
@@ -323,7 +323,7 @@ impl Ball<'_> {
             path(&["balls", id], "spin"),
             self.times.clone(),
             Arrows3D::update_fields()
-                .with_vectors(spin.iter().flatten().map(|&w| f32x3(w * (r * SPIN_SCALE))))
+                .with_vectors(spin.iter().map(|&(w, _)| f32x3(w * (r * SPIN_SCALE))))
                 .columns(counts),
         )
     }

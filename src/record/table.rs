@@ -25,7 +25,7 @@ fn put(
     rec.log_static(entity, arch).map_err(rerun_err)
 }
 
-/// A box with its bottom on the cloth plane, spanning plan corners `a` to `b` and `height` up.
+/// A box over the plan rectangle `a`..`b`, from height `z0` up by `height`: (centre, half size).
 fn slab(a: Vec3, b: Vec3, z0: f64, height: f64) -> ([f32; 3], [f32; 3]) {
     let c = 0.5 * (a + b);
     let h = 0.5 * (b - a);
@@ -55,6 +55,14 @@ pub fn extent(table: &Table, states: &[Vec<BallState>]) -> Option<(Vec3, Vec3)> 
     }
 }
 
+/// Solid boxes of one colour, from (centre, half size) pairs.
+fn boxes(slabs: Vec<([f32; 3], [f32; 3])>, colour: [u8; 3]) -> Boxes3D {
+    let (centres, halves): (Vec<_>, Vec<_>) = slabs.into_iter().unzip();
+    Boxes3D::from_centers_and_half_sizes(centres, halves)
+        .with_colors([Color::from_rgb(colour[0], colour[1], colour[2])])
+        .with_fill_mode(FillMode::Solid)
+}
+
 /// Logs the table (or, on the open table, a cloth patch over `extent`).
 pub fn log(
     rec: &RecordingStream,
@@ -65,13 +73,10 @@ pub fn log(
     let Some((lo, hi)) = extent else {
         return Ok(());
     };
-    let (c, h) = slab(lo, hi, -0.02, 0.02);
     put(
         rec,
         "table/cloth",
-        &Boxes3D::from_centers_and_half_sizes([c], [h])
-            .with_colors([Color::from_rgb(CLOTH[0], CLOTH[1], CLOTH[2])])
-            .with_fill_mode(FillMode::Solid),
+        &boxes(vec![slab(lo, hi, -0.02, 0.02)], CLOTH),
     )?;
     if table.kind == TableKind::Open {
         return Ok(());
@@ -79,56 +84,27 @@ pub fn log(
     let (l, w) = (table.length, table.width);
     let nose_h = params.cushion_height;
     let top = nose_h + 0.006;
-    let edge = RUBBER + RAIL;
 
-    // Rubber behind each straight nose (facings excepted: the pockets are there), then the rail.
-    let mut rubber = Vec::new();
-    for c in table.cushions.iter().filter(|c| !c.name.contains("facing")) {
-        let out = -c.normal * RUBBER;
-        rubber.push(slab(c.start, c.end + out, 0.0, top));
-    }
+    // Rubber behind each straight nose (facings excepted: the pockets are there), then the
+    // rail around it all (plan corners of its four sides).
+    let rubber = table
+        .cushions
+        .iter()
+        .filter(|c| !c.name.contains("facing"))
+        .map(|c| slab(c.start, c.end - c.normal * RUBBER, 0.0, top))
+        .collect();
+    put(rec, "table/cushions", &boxes(rubber, [22, 88, 42]))?;
+    let (r, e) = (RUBBER, RUBBER + RAIL);
     let rails = [
-        slab(
-            Vec3::new(-edge, -edge, 0.0),
-            Vec3::new(l + edge, -RUBBER, 0.0),
-            0.0,
-            top,
-        ),
-        slab(
-            Vec3::new(-edge, w + RUBBER, 0.0),
-            Vec3::new(l + edge, w + edge, 0.0),
-            0.0,
-            top,
-        ),
-        slab(
-            Vec3::new(-edge, -RUBBER, 0.0),
-            Vec3::new(-RUBBER, w + RUBBER, 0.0),
-            0.0,
-            top,
-        ),
-        slab(
-            Vec3::new(l + RUBBER, -RUBBER, 0.0),
-            Vec3::new(l + edge, w + RUBBER, 0.0),
-            0.0,
-            top,
-        ),
-    ];
-    let (rc, rh): (Vec<_>, Vec<_>) = rubber.into_iter().unzip();
-    put(
-        rec,
-        "table/cushions",
-        &Boxes3D::from_centers_and_half_sizes(rc, rh)
-            .with_colors([Color::from_rgb(22, 88, 42)])
-            .with_fill_mode(FillMode::Solid),
-    )?;
-    let (wc, wh): (Vec<_>, Vec<_>) = rails.into_iter().unzip();
-    put(
-        rec,
-        "table/rails",
-        &Boxes3D::from_centers_and_half_sizes(wc, wh)
-            .with_colors([Color::from_rgb(92, 52, 24)])
-            .with_fill_mode(FillMode::Solid),
-    )?;
+        ([-e, -e], [l + e, -r]),
+        ([-e, w + r], [l + e, w + e]),
+        ([-e, -r], [-r, w + r]),
+        ([l + r, -r], [l + e, w + r]),
+    ]
+    .iter()
+    .map(|&([x0, y0], [x1, y1])| slab(Vec3::new(x0, y0, 0.0), Vec3::new(x1, y1, 0.0), 0.0, top))
+    .collect();
+    put(rec, "table/rails", &boxes(rails, [92, 52, 24]))?;
 
     // The engine's contact geometry at the nose height: noses, facings and jaw arcs.
     let at_nose = |p: Vec3| [p.x as f32, p.y as f32, nose_h as f32];
