@@ -24,6 +24,10 @@ use snooker_engine::Vec3;
 const ELEVATION: f64 = 1.05;
 /// Vertical field of view the eye distance is computed for, rad (the viewer's default, 55 deg).
 const FOV_Y: f64 = 0.96;
+/// Share of the view's height the framed rectangle fills.
+const FILL: f64 = 0.9;
+/// The narrowest view (width over height) the framing allows for.
+const MIN_ASPECT: f64 = 2.0;
 
 /// Where the eye goes and what it looks at to frame the plan rectangle `lo`..`hi` from above
 /// its near long side: its near and far edges fill [`FILL`] of the view's height, symmetrically
@@ -54,11 +58,6 @@ fn eye(lo: Vec3, hi: Vec3) -> (Vec3, Vec3) {
     let target = e + axis * (-e.z / axis.z);
     (e, target)
 }
-
-/// Share of the view's height the framed rectangle fills.
-const FILL: f64 = 0.9;
-/// The narrowest view (width over height) the framing allows for.
-const MIN_ASPECT: f64 = 2.0;
 
 /// Fixed ids, so that the same scene always yields the same layout.
 fn id(n: u8) -> Uuid {
@@ -281,4 +280,29 @@ pub fn send(rec: &RecordingStream, extent: Option<(Vec3, Vec3)>) -> Result<(), R
         },
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_eye_frames_the_table_from_above_its_near_side() {
+        let (lo, hi) = (Vec3::new(-0.14, -0.14, 0.0), Vec3::new(3.709, 1.918, 0.0));
+        let (e, target) = eye(lo, hi);
+        let mid = 0.5 * (lo.x + hi.x);
+        let axis = (target - e).normalize();
+        let near = (Vec3::new(mid, lo.y, 0.0) - e).normalize();
+        let far = (Vec3::new(mid, hi.y, 0.0) - e).normalize();
+        assert!((axis.angle(&near) - axis.angle(&far)).abs() < 1e-9);
+        // It fits both ways, and one of the two fills the view.
+        let tall = near.angle(&far) / (FILL * FOV_Y);
+        let half_width = (MIN_ASPECT * (0.5 * FOV_Y).tan()).atan();
+        let centre = 0.5 * (lo + hi);
+        let wide = 0.5 * (hi.x - lo.x) / ((e - centre).norm() * (FILL * half_width).tan());
+        assert!(tall <= 1.0 + 1e-9 && wide <= 1.0 + 1e-9, "{tall} {wide}");
+        assert!((tall.max(wide) - 1.0).abs() < 1e-9, "{tall} {wide}");
+        assert!(e.y < lo.y && e.z > 1.0 && (e.x - mid).abs() < 1e-12);
+        assert!(target.z.abs() < 1e-12);
+    }
 }

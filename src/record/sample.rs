@@ -46,7 +46,7 @@ impl Schedule {
                 _ => groups.push((e.t, i, i + 1)),
             }
         }
-        let mut grid: Vec<f64> = (0..)
+        let mut grid: Vec<f64> = (0u64..)
             .map(|k| k as f64 / rate)
             .take_while(|&t| t <= shot.duration)
             .collect();
