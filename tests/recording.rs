@@ -339,6 +339,30 @@ fn a_potted_ball_leaves_the_view_and_the_plots() {
 }
 
 #[test]
+fn cloth_effects_stay_exact() {
+    // A tilted bed, nap and slip-dependent friction: laws renewed between events.
+    let text = r#"
+name = "cloth"
+[params]
+slope_x = 0.002
+nap_drift = 0.01
+mu_slide_low = 0.14
+slide_speed_scale = 0.2
+[[balls]]
+id = "cue"
+pos = [0.5, 0.4]
+vel = [2.0, 0.3, 0.0]
+spin = [0.0, -30.0, 20.0]
+[[balls]]
+id = "red"
+pos = [1.5, 0.55]
+"#;
+    let (scene, shot) = shot_of(text, "cloth.toml");
+    let d = decode(&record::encode(&scene, &shot, &RecordOptions::default()).unwrap());
+    check_against_engine(&d, &shot, record::DEFAULT_RATE);
+}
+
+#[test]
 fn table_geometry_is_static_and_complete() {
     let (scene, shot) = break_off();
     let bytes = record::encode(&scene, &shot, &RecordOptions { rate: 30.0 }).unwrap();
