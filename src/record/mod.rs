@@ -180,6 +180,7 @@ struct Ball<'a> {
 }
 
 impl Ball<'_> {
+    /// Sends one entity's columns against `times`.
     fn send(
         &self,
         entity: EntityPath,
@@ -198,6 +199,7 @@ impl Ball<'_> {
         TimeColumn::new_duration_secs(TIMELINE, rows.iter().map(|&i| self.schedule.instants[i].t))
     }
 
+    /// Logs everything about the ball.
     fn log(&self) -> Result<(), RecordError> {
         let id = self.track.id.as_str();
         let r = self.params.ball_radius;
@@ -252,6 +254,7 @@ impl Ball<'_> {
         )?;
         let marker = path(&["balls", id, "body"], "marker");
         let rings = marker_rings(r * 1.004);
+        // Light rings on the dark balls (black, green), dark ones on the others.
         let ring_colour = if self.track.kind.rgb().iter().map(|&c| c as u32).sum::<u32>() < 200 {
             Color::from_rgb(230, 230, 230)
         } else {
