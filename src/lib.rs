@@ -5,5 +5,6 @@ pub mod discrepancy_cmd;
 pub mod impact_cmd;
 pub mod measured;
 pub mod output;
+pub mod record;
 pub mod scene;
 pub mod validate_cmd;

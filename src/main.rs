@@ -1,7 +1,7 @@
 //! `snooker`: simulate snooker shots from scene files.
 
 use clap::{Parser, Subcommand};
-use snooker::{discrepancy_cmd, impact_cmd, output, scene, validate_cmd};
+use snooker::{discrepancy_cmd, impact_cmd, output, record, scene, validate_cmd};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -28,6 +28,13 @@ enum Command {
         /// Print nothing but errors (and the JSON if it goes to standard output).
         #[arg(long, short)]
         quiet: bool,
+        /// Write a Rerun recording of the shot to this file (open it with `rerun OUT.rrd`,
+        /// viewer `pip install rerun-sdk==0.36.3`; see docs/recording.md).
+        #[arg(long, value_name = "OUT.rrd")]
+        record: Option<PathBuf>,
+        /// Sample rate of the recording, Hz (every event instant is sampled as well).
+        #[arg(long, value_name = "HZ", default_value_t = record::DEFAULT_RATE, requires = "record")]
+        record_rate: f64,
     },
     /// One impact of the thesis's frictional models (chapter 6): the state just after it and
     /// once the slip on the cloth has ended. Spins in units of V/R as in the thesis's figures.
@@ -159,7 +166,33 @@ const BAD_INPUT: u8 = 2;
 /// Exit code for a simulation that could not finish.
 const SIM_FAILED: u8 = 1;
 
-fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> ExitCode {
+/// Checks an output path before the work: not a directory, and its directory exists.
+fn check_output(flag: &str, path: &Path) -> Result<(), String> {
+    if path.is_dir() {
+        return Err(format!(
+            "{flag} {}: is a directory, not a file",
+            path.display()
+        ));
+    }
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+    if let Some(dir) = dir
+        && !dir.is_dir()
+    {
+        return Err(format!(
+            "{flag} {}: the directory {} does not exist",
+            path.display(),
+            dir.display()
+        ));
+    }
+    Ok(())
+}
+
+fn simulate(
+    scene_path: Option<PathBuf>,
+    json: Option<String>,
+    quiet: bool,
+    recording: Option<(PathBuf, record::RecordOptions)>,
+) -> ExitCode {
     let loaded = match &scene_path {
         Some(p) => scene::load(p),
         None => scene::parse(scene::DEFAULT_SCENE, scene::DEFAULT_SCENE_FILE),
@@ -178,6 +211,16 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
         eprintln!("error: --json {out}: is a directory, not a file");
         return ExitCode::from(BAD_INPUT);
     }
+    if let Some((out, opts)) = &recording {
+        if let Err(e) = check_output("--record", out) {
+            eprintln!("error: {e}");
+            return ExitCode::from(BAD_INPUT);
+        }
+        if let Err(e) = opts.validate() {
+            eprintln!("error: --record-rate {}: {e}", opts.rate);
+            return ExitCode::from(BAD_INPUT);
+        }
+    }
     let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
         Ok(s) => s,
         Err(e) => {
@@ -192,6 +235,7 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
             return ExitCode::from(SIM_FAILED);
         }
     };
+    let json_to_stdout = json.as_deref() == Some("-");
     if !quiet {
         let text = output::summary(&scene, &shot);
         if json.as_deref() == Some("-") {
@@ -213,6 +257,35 @@ fn simulate(scene_path: Option<PathBuf>, json: Option<String>, quiet: bool) -> E
             return ExitCode::from(BAD_INPUT);
         } else if !quiet {
             println!("result written to {out}");
+        }
+    }
+    if let Some((out, opts)) = recording {
+        let bytes = match record::encode(&scene, &shot, &opts) {
+            Ok(b) => b,
+            Err(e @ (record::RecordError::Rate(_) | record::RecordError::TooLarge(_))) => {
+                eprintln!("error: --record {}: {e}", out.display());
+                return ExitCode::from(BAD_INPUT);
+            }
+            Err(e) => {
+                eprintln!("error: --record {}: {e}", out.display());
+                return ExitCode::from(SIM_FAILED);
+            }
+        };
+        if let Err(e) = output::write_atomic(&out, &bytes) {
+            eprintln!("error: --record {}: {e:#}", out.display());
+            return ExitCode::from(BAD_INPUT);
+        }
+        if !quiet {
+            let note = format!(
+                "recording written to {0} (open it with `rerun {0}`)",
+                out.display()
+            );
+            // Standard output may be carrying the JSON; a closed pipe is no error here.
+            let _ = if json_to_stdout {
+                writeln!(std::io::stderr(), "{note}")
+            } else {
+                writeln!(std::io::stdout(), "{note}")
+            };
         }
     }
     ExitCode::SUCCESS
@@ -353,7 +426,18 @@ fn main() -> ExitCode {
         }
     };
     match cli.command {
-        Command::Simulate { scene, json, quiet } => simulate(scene, json, quiet),
+        Command::Simulate {
+            scene,
+            json,
+            quiet,
+            record,
+            record_rate,
+        } => simulate(
+            scene,
+            json,
+            quiet,
+            record.map(|p| (p, record::RecordOptions { rate: record_rate })),
+        ),
         Command::Synth {
             scene,
             effects,

@@ -197,7 +197,14 @@ pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
         .file_name()
         .context("the output path has no file name")?;
     let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
-    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    let written = std::fs::write(&tmp, text)
+        .with_context(|| format!("cannot write {}", tmp.display()))
+        .and_then(|()| {
+            std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))
+        });
+    if written.is_err() {
+        // Leave nothing behind; the temporary file may not even exist.
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
 }
