@@ -4,14 +4,15 @@
 #
 # Installs what it needs itself: software Vulkan (Mesa) through apt, and the viewer
 # (rerun-sdk, the version the recordings are written with) in a venv under target/.
-# Usage: scripts/screenshot.sh [OUT.png]   (default docs/img/break-off.png)
+# Usage: scripts/screenshot.sh [OUT.png [RECORDING.rrd]]   (default docs/img/break-off.png of
+# the break-off; with a recording, e.g. a discrepancy report's overlay.rrd, that one instead)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 RERUN_VERSION=0.36.3
 OUT=${1:-docs/img/break-off.png}
 VENV=target/rerun-venv
-RRD=target/screenshot/break-off.rrd
+RRD=${2:-target/screenshot/break-off.rrd}
 
 if ! dpkg -s mesa-vulkan-drivers libvulkan1 >/dev/null 2>&1; then
     SUDO=$([ "$(id -u)" -eq 0 ] || echo sudo)
@@ -23,9 +24,12 @@ if ! "$VENV/bin/rerun" --version 2>/dev/null | grep -q "$RERUN_VERSION"; then
     "$VENV/bin/pip" install --quiet "rerun-sdk==$RERUN_VERSION"
 fi
 
-cargo build --release --quiet --bin snooker
-mkdir -p "$(dirname "$RRD")" "$(dirname "$OUT")"
-target/release/snooker simulate --quiet --record "$RRD"
+mkdir -p "$(dirname "$OUT")"
+if [ $# -lt 2 ]; then
+    cargo build --release --quiet --bin snooker
+    mkdir -p "$(dirname "$RRD")"
+    target/release/snooker simulate --quiet --record "$RRD"
+fi
 
 # A fresh home so that no layout or setting saved by an earlier viewer session is used (and
 # analytics stay off); `--port auto` starts a new viewer even if one listens on 9876;

@@ -147,12 +147,8 @@ pub fn synth(req: &SynthRequest) -> anyhow::Result<String> {
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        bail!(
-            "-o {}: the directory {} does not exist",
-            out.display(),
-            dir.display()
-        );
+    if let Err(e) = crate::output::check_output(out) {
+        bail!("-o {}: {e}", out.display());
     }
     let truth_text: Vec<String> = hidden
         .effects
@@ -269,6 +265,91 @@ pub fn write(req: &Request, m: &Measurement, o: &Outcome) -> anyhow::Result<Vec<
             plot_observables(o, &p)?;
             written.push(p);
         }
+        written.extend(write_overlays(m, o, dir)?);
+    }
+    Ok(written)
+}
+
+/// Colour of the measured centroids in the overlay recordings.
+pub const MEASURED_COLOR: [u8; 3] = [255, 0, 255];
+/// Colour of the start model's ball centres in the overlay recordings.
+pub const START_MODEL_COLOR: [u8; 3] = [255, 150, 0];
+
+/// The overlay recording's file name for shot `index` of `m`: `overlay.rrd` for a single
+/// shot, else `overlay-<index>-<name>.rrd` with the name reduced to safe characters.
+pub fn overlay_file(m: &Measurement, index: usize) -> String {
+    if m.shots.len() == 1 {
+        return "overlay.rrd".into();
+    }
+    let name: String = m.shots[index]
+        .name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .take(40)
+        .collect();
+    format!("overlay-{index}-{name}.rrd")
+}
+
+/// One Rerun recording per tracked shot: the final model's shot as balls, with the measured
+/// centroids (`measured/<ball>`) and the start model's centres at the same times
+/// (`start_model/<ball>`) as points on the cloth.
+fn write_overlays(m: &Measurement, o: &Outcome, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    for (i, shot) in m.shots.iter().enumerate() {
+        if shot.samples.is_empty() {
+            continue;
+        }
+        let (start, last) = (&o.baseline.sims[i], &o.last.sims[i]);
+        let r = m.model.params.ball_radius;
+        let mut overlays = Vec::new();
+        for (b, id) in shot.ids().into_iter().enumerate() {
+            let seen: Vec<_> = shot.samples.iter().filter(|s| s.ball == b).collect();
+            if seen.is_empty() {
+                continue;
+            }
+            let at_z = |x: f64, y: f64| snooker_engine::Vec3::new(x, y, r);
+            overlays.push(crate::record::Overlay {
+                entity: vec!["measured".into(), id.clone()],
+                points: seen
+                    .iter()
+                    .map(|s| (s.t, at_z(s.pos[0], s.pos[1])))
+                    .collect(),
+                color: MEASURED_COLOR,
+                radius: 0.008,
+            });
+            overlays.push(crate::record::Overlay {
+                entity: vec!["start_model".into(), id],
+                points: seen
+                    .iter()
+                    .map(|s| (s.t, start.tracks[b].state_at(s.t, &start.params).pos))
+                    .collect(),
+                color: START_MODEL_COLOR,
+                radius: 0.006,
+            });
+        }
+        let view = scene::Scene {
+            name: format!("{} (final model)", shot.name),
+            setup: shot.setup.clone(),
+            options: snooker_engine::SimOptions::default(),
+            strike: None,
+            before_strike: None,
+        };
+        let bytes = crate::record::encode_with_overlays(
+            &view,
+            last,
+            &crate::record::RecordOptions::default(),
+            &overlays,
+        )
+        .with_context(|| format!("overlay recording of shot {}", shot.name))?;
+        let p = dir.join(overlay_file(m, i));
+        write_atomic(&p, &bytes)?;
+        written.push(p);
     }
     Ok(written)
 }

@@ -167,26 +167,6 @@ const BAD_INPUT: u8 = 2;
 const SIM_FAILED: u8 = 1;
 
 /// Checks an output path before the work: not a directory, and its directory exists.
-fn check_output(flag: &str, path: &Path) -> Result<(), String> {
-    if path.is_dir() {
-        return Err(format!(
-            "{flag} {}: is a directory, not a file",
-            path.display()
-        ));
-    }
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
-    if let Some(dir) = dir
-        && !dir.is_dir()
-    {
-        return Err(format!(
-            "{flag} {}: the directory {} does not exist",
-            path.display(),
-            dir.display()
-        ));
-    }
-    Ok(())
-}
-
 fn simulate(
     scene_path: Option<PathBuf>,
     json: Option<String>,
@@ -204,16 +184,15 @@ fn simulate(
             return ExitCode::from(BAD_INPUT);
         }
     };
-    if let Some(out) = json
-        .as_deref()
-        .filter(|o| *o != "-" && Path::new(o).is_dir())
+    if let Some(out) = json.as_deref().filter(|o| *o != "-")
+        && let Err(e) = output::check_output(Path::new(out))
     {
-        eprintln!("error: --json {out}: is a directory, not a file");
+        eprintln!("error: --json {out}: {e}");
         return ExitCode::from(BAD_INPUT);
     }
     if let Some((out, opts)) = &recording {
-        if let Err(e) = check_output("--record", out) {
-            eprintln!("error: {e}");
+        if let Err(e) = output::check_output(out) {
+            eprintln!("error: --record {}: {e}", out.display());
             return ExitCode::from(BAD_INPUT);
         }
         if let Err(e) = opts.validate() {
@@ -244,6 +223,21 @@ fn simulate(
             print!("{text}");
         }
     }
+    // The recording is made before anything is written, so that a failure leaves no result.
+    let recording = match recording {
+        None => None,
+        Some((out, opts)) => match record::encode(&scene, &shot, &opts) {
+            Ok(bytes) => Some((out, bytes)),
+            Err(e @ (record::RecordError::Rate(_) | record::RecordError::TooLarge(_))) => {
+                eprintln!("error: --record {}: {e}", out.display());
+                return ExitCode::from(BAD_INPUT);
+            }
+            Err(e) => {
+                eprintln!("error: --record {}: {e}", out.display());
+                return ExitCode::from(SIM_FAILED);
+            }
+        },
+    };
     if let Some(out) = json {
         let doc = output::result_json(&scene, &shot);
         let text = serde_json::to_string_pretty(&doc).expect("JSON of finite numbers");
@@ -259,18 +253,7 @@ fn simulate(
             println!("result written to {out}");
         }
     }
-    if let Some((out, opts)) = recording {
-        let bytes = match record::encode(&scene, &shot, &opts) {
-            Ok(b) => b,
-            Err(e @ (record::RecordError::Rate(_) | record::RecordError::TooLarge(_))) => {
-                eprintln!("error: --record {}: {e}", out.display());
-                return ExitCode::from(BAD_INPUT);
-            }
-            Err(e) => {
-                eprintln!("error: --record {}: {e}", out.display());
-                return ExitCode::from(SIM_FAILED);
-            }
-        };
+    if let Some((out, bytes)) = recording {
         if let Err(e) = output::write_atomic(&out, &bytes) {
             eprintln!("error: --record {}: {e:#}", out.display());
             return ExitCode::from(BAD_INPUT);
@@ -375,17 +358,28 @@ fn discrepancy(req: discrepancy_cmd::Request, quiet: bool) -> ExitCode {
             return ExitCode::from(BAD_INPUT);
         }
     };
-    for (path, what) in [(&req.json, "--json"), (&req.report, "--report")] {
-        if let Some(p) = path
-            && p.parent()
-                .is_some_and(|d| !d.as_os_str().is_empty() && !d.is_dir())
-        {
-            eprintln!(
-                "error: {what} {}: the directory does not exist",
-                p.display()
-            );
-            return ExitCode::from(BAD_INPUT);
+    let json_ok = req.json.as_deref().map_or(Ok(()), output::check_output);
+    if let Err(e) = json_ok {
+        eprintln!(
+            "error: --json {}: {e}",
+            req.json.as_deref().unwrap_or(Path::new("")).display()
+        );
+        return ExitCode::from(BAD_INPUT);
+    }
+    // The report directory: a file named like it, or a file on its way, is in the way.
+    let report_ok = req.report.as_deref().map_or(Ok(()), |d| {
+        if d.exists() && !d.is_dir() {
+            Err("is a file, not a directory".to_string())
+        } else {
+            output::check_output(&d.join("report.json"))
         }
+    });
+    if let Err(e) = report_ok {
+        eprintln!(
+            "error: --report {}: {e}",
+            req.report.as_deref().unwrap_or(Path::new("")).display()
+        );
+        return ExitCode::from(BAD_INPUT);
     }
     let outcome = match discrepancy_cmd::run(&m) {
         Ok(o) => o,

@@ -185,8 +185,29 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
     out
 }
 
+/// Checks, before any work, that `path` can become an output file: it is not a directory and
+/// nothing but directories lies on its way (missing directories are created when it is
+/// written).
+pub fn check_output(path: &std::path::Path) -> Result<(), String> {
+    if path.is_dir() {
+        return Err("is a directory, not a file".into());
+    }
+    if path.file_name().is_none() {
+        return Err("has no file name".into());
+    }
+    let first_existing = path
+        .ancestors()
+        .skip(1)
+        .filter(|a| !a.as_os_str().is_empty())
+        .find(|a| a.exists());
+    match first_existing {
+        Some(a) if !a.is_dir() => Err(format!("{} is not a directory", a.display())),
+        _ => Ok(()),
+    }
+}
+
 /// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing
-/// is left half-written.
+/// is left half-written. Missing directories on the way are created.
 pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
     use anyhow::Context;
     let dir = path
@@ -196,6 +217,7 @@ pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
     let name = path
         .file_name()
         .context("the output path has no file name")?;
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
     let written = std::fs::write(&tmp, text)
         .with_context(|| format!("cannot write {}", tmp.display()))

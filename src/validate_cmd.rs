@@ -117,8 +117,8 @@ pub fn run(req: &Request, specs: &[SceneSpec]) -> Report {
 
 /// Writes `text` to `path`, naming the path in the error.
 pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
-    std::fs::write(path, text)
-        .map_err(|e| BadInput(format!("cannot write {}: {e}", path.display())))
+    crate::output::write_atomic(path, text.as_bytes())
+        .map_err(|e| BadInput(format!("cannot write {}: {e:#}", path.display())))
 }
 
 /// Prints the report and writes the requested files.

@@ -9,10 +9,27 @@ use std::path::Path;
 
 #[test]
 fn default_run_prints_a_summary_and_writes_the_contract() {
+    // The README's main command, in a fresh directory: `out/` does not exist yet.
     let dir = temp_dir("default");
-    let out = dir.join("r.json");
-    let o = snooker(&["simulate", "--json", out.to_str().unwrap()]);
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_snooker"))
+        .current_dir(&dir)
+        .args([
+            "simulate",
+            "--json",
+            "out/break-off.json",
+            "--record",
+            "out/break-off.rrd",
+        ])
+        .output()
+        .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = dir.join("out/break-off.json");
+    assert!(
+        std::fs::metadata(dir.join("out/break-off.rrd"))
+            .unwrap()
+            .len()
+            > 1_000_000
+    );
     let text = String::from_utf8(o.stdout).unwrap();
     for needle in [
         "scene: break-off",

@@ -6,6 +6,8 @@
 mod common;
 
 use common::{snooker, temp_dir};
+use rerun::external::re_log_encoding::DecoderApp;
+use rerun::log::{Chunk, LogMsg};
 use serde_json::Value;
 use std::path::Path;
 
@@ -15,6 +17,38 @@ fn s(p: &Path) -> &str {
 
 fn json(path: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The points logged over time at `entity` of a recording: (time ns, position).
+fn overlay_points(rrd: &Path, entity: &str) -> Vec<(i64, [f32; 3])> {
+    let bytes = std::fs::read(rrd).unwrap();
+    let component = rerun::Points3D::descriptor_positions().component;
+    let mut out = Vec::new();
+    for msg in DecoderApp::decode_lazy(bytes.as_slice()) {
+        let LogMsg::ArrowMsg(_, arrow) = msg.expect("a valid .rrd stream") else {
+            continue;
+        };
+        let chunk = Chunk::from_arrow_msg(&arrow).expect("a valid chunk");
+        if chunk.is_static() || chunk.entity_path().to_string().trim_start_matches('/') != entity {
+            continue;
+        }
+        let Some(times) = chunk
+            .timelines()
+            .get(&rerun::TimelineName::from(snooker::record::TIMELINE))
+        else {
+            continue;
+        };
+        let times = times.times_raw().to_vec();
+        for (t, v) in times
+            .into_iter()
+            .zip(chunk.iter_component::<rerun::components::Position3D>(component))
+        {
+            for p in v.iter() {
+                out.push((t, [p.x(), p.y(), p.z()]));
+            }
+        }
+    }
+    out
 }
 
 /// Mean relative error of the observables of shots whose name starts with `prefix`.
@@ -85,7 +119,13 @@ fn a_hidden_slope_is_found_from_files_with_a_full_report() {
     );
     assert!(step["uncertainties"]["slope_x"].as_f64().unwrap() > 0.0);
     assert!(step["gap"]["rms"].as_f64().unwrap() < 1.5 * 5e-4);
-    for f in ["report.json", "summary.txt", "tracks.png", "residuals.png"] {
+    for f in [
+        "report.json",
+        "summary.txt",
+        "tracks.png",
+        "residuals.png",
+        "overlay.rrd",
+    ] {
         let p = report.join(f);
         assert!(
             p.is_file() && std::fs::metadata(&p).unwrap().len() > 100,
@@ -93,6 +133,33 @@ fn a_hidden_slope_is_found_from_files_with_a_full_report() {
         );
     }
     assert_eq!(json(&report.join("report.json")), doc);
+    // The overlay recording holds every measured centroid of the tracks file, at its time.
+    let csv = std::fs::read_to_string(dir.join("slope.csv")).unwrap();
+    let rrd = report.join("overlay.rrd");
+    for ball in ["cue"] {
+        let measured: Vec<(f64, f64, f64)> = csv
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').collect::<Vec<_>>())
+            .filter(|f| f[1] == ball)
+            .map(|f| {
+                (
+                    f[0].parse().unwrap(),
+                    f[2].parse().unwrap(),
+                    f[3].parse().unwrap(),
+                )
+            })
+            .collect();
+        assert!(measured.len() > 100);
+        let logged = overlay_points(&rrd, &format!("measured/{ball}"));
+        assert_eq!(logged.len(), measured.len(), "measured/{ball}");
+        for ((t, p), (mt, mx, my)) in logged.iter().zip(&measured) {
+            assert!((*t as f64 * 1e-9 - mt).abs() < 1e-9, "{t} {mt}");
+            assert!((p[0] as f64 - mx).abs() < 1e-6 && (p[1] as f64 - my).abs() < 1e-6);
+        }
+        let start = overlay_points(&rrd, &format!("start_model/{ball}"));
+        assert_eq!(start.len(), measured.len(), "start_model/{ball}");
+    }
 }
 
 /// The workflow's JSON report on `data`, from the ideal ball-ball model.

@@ -448,12 +448,19 @@ fn cli_writes_a_recording_and_rejects_bad_paths() {
     // Only the recording is left: no temporary file.
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
 
-    let missing_dir = dir.join("no/such/dir/x.rrd");
+    // Missing directories on the way are created.
+    let nested = dir.join("new/sub/x.rrd");
+    let run = snooker(&["simulate", "--quiet", "--record", nested.to_str().unwrap()]);
+    assert!(run.status.success() && nested.is_file());
+    std::fs::remove_dir_all(dir.join("new")).unwrap();
+
+    // A file where a directory should be.
+    let file_in_the_way = out.join("x.rrd");
     let y = dir.join("y.rrd").display().to_string();
     // (arguments, whether our own one-line message is expected rather than clap's usage text)
     let bad: Vec<(Vec<String>, bool)> = vec![
         (
-            vec!["--record".into(), missing_dir.display().to_string()],
+            vec!["--record".into(), file_in_the_way.display().to_string()],
             true,
         ),
         (vec!["--record".into(), dir.display().to_string()], true),

@@ -125,9 +125,33 @@ fn rgb(c: [u8; 3]) -> Color {
     Color::from_rgb(c[0], c[1], c[2])
 }
 
+/// Points shown over a recording on their own entity: a ball's measured centroids, or where
+/// another model put it (the discrepancy workflow's overlays).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Overlay {
+    /// Entity path as its parts, e.g. `["measured", "cue"]` (free text: escaped as needed).
+    pub entity: Vec<String>,
+    /// (time s, position m), in time order.
+    pub points: Vec<(f64, Vec3)>,
+    /// Colour.
+    pub color: [u8; 3],
+    /// Radius of the points, m.
+    pub radius: f64,
+}
+
 /// Records `shot` (simulated from `scene`) and returns the `.rrd` file's bytes: the recording
 /// and the default blueprint that frames the table.
 pub fn encode(scene: &Scene, shot: &Shot, opts: &RecordOptions) -> Result<Vec<u8>, RecordError> {
+    encode_with_overlays(scene, shot, opts, &[])
+}
+
+/// As [`encode`], with `overlays` logged on top.
+pub fn encode_with_overlays(
+    scene: &Scene,
+    shot: &Shot,
+    opts: &RecordOptions,
+    overlays: &[Overlay],
+) -> Result<Vec<u8>, RecordError> {
     opts.validate()?;
     // Checked before anything is allocated: the grid, the end, two instants per event.
     let instants = (shot.duration * opts.rate).floor() + 2.0 + 2.0 * shot.events.len() as f64;
@@ -165,7 +189,37 @@ pub fn encode(scene: &Scene, shot: &Shot, opts: &RecordOptions) -> Result<Vec<u8
         ball.log()?;
     }
     log_events(&rec, shot)?;
+    for o in overlays {
+        log_overlay(&rec, o)?;
+    }
     storage.drain_as_bytes().map_err(rerun_err)
+}
+
+/// One overlay: its style once, the whole path as a static line (`<entity>/path`) so it can
+/// be compared at any time, then one point per time.
+fn log_overlay(rec: &RecordingStream, o: &Overlay) -> Result<(), RecordError> {
+    let entity = EntityPath::new(o.entity.iter().map(EntityPathPart::new).collect());
+    rec.log_static(
+        entity.join(&EntityPath::from("path")),
+        &LineStrips3D::new([o.points.iter().map(|p| f32x3(p.1)).collect::<Vec<_>>()])
+            .with_colors([rgb(o.color)])
+            .with_radii([rerun::Radius::new_ui_points(1.0)]),
+    )
+    .map_err(rerun_err)?;
+    rec.log_static(
+        entity.clone(),
+        &Points3D::update_fields()
+            .with_colors([rgb(o.color)])
+            .with_radii([rerun::Radius::new_scene_units(o.radius as f32)]),
+    )
+    .map_err(rerun_err)?;
+    let times = TimeColumn::new_duration_secs(TIMELINE, o.points.iter().map(|p| p.0));
+    let columns = Points3D::update_fields()
+        .with_positions(o.points.iter().map(|p| f32x3(p.1)))
+        .columns_of_unit_batches()
+        .map_err(rerun_err)?;
+    rec.send_columns(entity, [times], columns)
+        .map_err(rerun_err)
 }
 
 /// One ball's recording.
