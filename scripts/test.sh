@@ -1,8 +1,23 @@
 #!/usr/bin/env bash
 # The project's test command: formatting, lints, then every test of the workspace in release
-# mode (physics in a debug build is ~80x slower). Needs only cargo.
+# mode (physics in a debug build is ~80x slower). Needs cargo, and a TrueType font for the
+# plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+font=""
+for f in /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf /usr/share/fonts/TTF/DejaVuSans.ttf \
+    /usr/share/fonts/dejavu/DejaVuSans.ttf; do
+    [ -f "$f" ] && font=$f
+done
+if [ -z "$font" ]; then
+    if command -v apt-get >/dev/null; then
+        SUDO=$([ "$(id -u)" -eq 0 ] || echo sudo)
+        $SUDO apt-get update -qq
+        $SUDO apt-get install -y -qq --no-install-recommends fonts-dejavu-core
+    else
+        echo "warning: no DejaVu Sans font and no apt-get: the plot tests will fail" >&2
+    fi
+fi
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --release -- -D warnings
 cargo test --workspace --release

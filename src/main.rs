@@ -166,7 +166,6 @@ const BAD_INPUT: u8 = 2;
 /// Exit code for a simulation that could not finish.
 const SIM_FAILED: u8 = 1;
 
-/// Checks an output path before the work: not a directory, and its directory exists.
 fn simulate(
     scene_path: Option<PathBuf>,
     json: Option<String>,
@@ -358,28 +357,23 @@ fn discrepancy(req: discrepancy_cmd::Request, quiet: bool) -> ExitCode {
             return ExitCode::from(BAD_INPUT);
         }
     };
-    let json_ok = req.json.as_deref().map_or(Ok(()), output::check_output);
-    if let Err(e) = json_ok {
-        eprintln!(
-            "error: --json {}: {e}",
-            req.json.as_deref().unwrap_or(Path::new("")).display()
-        );
+    if let Some(p) = &req.json
+        && let Err(e) = output::check_output(p)
+    {
+        eprintln!("error: --json {}: {e}", p.display());
         return ExitCode::from(BAD_INPUT);
     }
-    // The report directory: a file named like it, or a file on its way, is in the way.
-    let report_ok = req.report.as_deref().map_or(Ok(()), |d| {
-        if d.exists() && !d.is_dir() {
+    if let Some(d) = &req.report {
+        // A file of that name, or a file on its way, is in the way of the report directory.
+        let in_the_way = if d.exists() && !d.is_dir() {
             Err("is a file, not a directory".to_string())
         } else {
             output::check_output(&d.join("report.json"))
+        };
+        if let Err(e) = in_the_way {
+            eprintln!("error: --report {}: {e}", d.display());
+            return ExitCode::from(BAD_INPUT);
         }
-    });
-    if let Err(e) = report_ok {
-        eprintln!(
-            "error: --report {}: {e}",
-            req.report.as_deref().unwrap_or(Path::new("")).display()
-        );
-        return ExitCode::from(BAD_INPUT);
     }
     let outcome = match discrepancy_cmd::run(&m) {
         Ok(o) => o,

@@ -248,16 +248,7 @@ fn a_tilt_that_would_roll_resting_balls_away_is_refused() {
         slope_x: 0.02,
         ..Params::default()
     };
-    let setup = Setup {
-        table: Table::open(),
-        params: p,
-        models: Models::default(),
-        balls: vec![Ball {
-            id: "cue".into(),
-            kind: BallKind::Cue,
-            state: BallState::at_rest(0.0, 0.0, p.ball_radius),
-        }],
-    };
+    let setup = common::one_ball_setup(BallState::at_rest(0.0, 0.0, p.ball_radius), p);
     let err = simulate(&setup, &SimOptions::default()).unwrap_err();
     assert!(err.to_string().contains("slope_x"), "{err}");
 }

@@ -2,25 +2,14 @@
 //! §5.3, §7.1.1): stun to roll, a strike at 7R/5, the rolling stop distance, sidespin decay,
 //! the massé curve and free flight.
 
+mod common;
+
 use snooker_engine::cue::{self, Cue};
 use snooker_engine::motion::Transition;
-use snooker_engine::{
-    Ball, BallKind, BallState, EventKind, Models, Motion, Params, Setup, SimOptions, Table, Vec3,
-    simulate,
-};
+use snooker_engine::{BallState, EventKind, Motion, Params, SimOptions, Vec3, simulate};
 
 fn one_ball(state: BallState, p: Params) -> snooker_engine::Shot {
-    let setup = Setup {
-        table: Table::open(),
-        params: p,
-        models: Models::default(),
-        balls: vec![Ball {
-            id: "cue".into(),
-            kind: BallKind::Cue,
-            state,
-        }],
-    };
-    simulate(&setup, &SimOptions::default()).unwrap()
+    simulate(&common::one_ball_setup(state, p), &SimOptions::default()).unwrap()
 }
 
 fn moving(vel: Vec3, spin: Vec3, p: &Params) -> BallState {

@@ -13,6 +13,20 @@ pub fn snooker(args: &[&str]) -> Output {
         .unwrap()
 }
 
+/// One cue ball in `state` on the open table with parameters `p`.
+pub fn one_ball_setup(state: snooker_engine::BallState, p: snooker_engine::Params) -> Setup {
+    Setup {
+        table: snooker_engine::Table::open(),
+        params: p,
+        models: snooker_engine::Models::default(),
+        balls: vec![snooker_engine::Ball {
+            id: "cue".into(),
+            kind: snooker_engine::BallKind::Cue,
+            state,
+        }],
+    }
+}
+
 /// A fresh, empty temporary directory for test `tag`.
 pub fn temp_dir(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("snooker-test-{tag}-{}", std::process::id()));
