@@ -617,8 +617,14 @@ impl Contact {
                 Friction::AtZero
             };
         }
-        // A cloth contact under a ball that is not pressed down has no friction at all.
-        let f = self.forces(y, &loc, &mode);
+        // A cloth contact under a ball that is not pressed down has no friction at all. The
+        // reactions depend on the primary friction alone, so the contacts at zero slip need
+        // solving here only when the primary contact is one of them.
+        let f = if mode.friction[0] == Friction::AtZero {
+            self.forces(y, &loc, &mode)
+        } else {
+            self.forces_with(y, &loc, &mode, &[Vec3::zeros(); 3])
+        };
         for i in 0..2 {
             if f.reaction[i] <= 0.0 {
                 mode.friction[1 + i] = Friction::Off;
@@ -804,7 +810,10 @@ impl Contact {
             };
             p = ph.x;
             y = ph.y;
-            h = ph.h.max(1e-9 * p_guess);
+            // The next phase starts from the step size reached, but no longer than the whole
+            // frictionless impulse (a step across a slow phase grows tenfold, and would be
+            // rejected).
+            h = ph.h.clamp(1e-9 * p_guess, p_guess);
             match ev {
                 0 => {
                     compressing = false;
