@@ -117,14 +117,15 @@ fn combine<const N: usize, const S: usize>(
     out
 }
 
-/// Error norm (as [`error_norm`]) of the step from `y0` to `y1` of size `h` with stages `k`,
-/// without forming the error vector.
+/// Error norm (as [`error_norm`], the mean taken over `dim` components) of the step from `y0`
+/// to `y1` of size `h` with stages `k`, without forming the error vector.
 fn step_error<const N: usize>(
     y0: &[f64; N],
     y1: &[f64; N],
     k: &[[f64; N]; 7],
     h: f64,
     tol: f64,
+    dim: usize,
 ) -> f64 {
     let mut sum = 0.0;
     for i in 0..N {
@@ -136,7 +137,7 @@ fn step_error<const N: usize>(
         let r = h * e / sc;
         sum += r * r;
     }
-    (sum / N as f64).sqrt()
+    (sum / dim as f64).sqrt()
 }
 
 /// The continuous extension of one step in Horner form, its coefficients formed once so that
@@ -239,6 +240,30 @@ pub fn integrate<const N: usize, const K: usize, F, G, S>(
     tol: f64,
     root_tol: f64,
     max_steps: usize,
+    on_step: S,
+) -> Phase<N>
+where
+    F: Fn(&[f64; N]) -> [f64; N],
+    G: Fn(&[f64; N]) -> [f64; K],
+    S: FnMut(f64, &[f64; N]),
+{
+    integrate_within(f, g, x0, y0, h0, tol, root_tol, max_steps, N, on_step)
+}
+
+/// [`integrate`] for the non-constant components of a larger system, `dim` components in all,
+/// whose others stay constant: the error norm is the RMS over all `dim` (the constant ones
+/// contributing zero), so the steps, and the results, are those of the whole system.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_within<const N: usize, const K: usize, F, G, S>(
+    f: &F,
+    g: &G,
+    x0: f64,
+    y0: [f64; N],
+    h0: f64,
+    tol: f64,
+    root_tol: f64,
+    max_steps: usize,
+    dim: usize,
     mut on_step: S,
 ) -> Phase<N>
 where
@@ -256,7 +281,7 @@ where
     let mut ln_en_old: f64 = 1e-4f64.ln();
     for steps in 0..max_steps {
         stages(f, &y, h, &mut k, &mut y1);
-        let en = step_error(&y, &y1, &k, h, tol);
+        let en = step_error(&y, &y1, &k, h, tol, dim);
         if en.is_nan() || en > 1.0 {
             // Rejected (or NaN): shrink and retry.
             h *= if en.is_finite() {
