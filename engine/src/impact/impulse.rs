@@ -265,6 +265,54 @@ struct Local {
     slip: [Vec3; 3],
 }
 
+/// The bodies' velocities and spins in one state (or their rates).
+#[derive(Clone, Copy, Debug)]
+struct Bodies {
+    vel: [Vec3; 2],
+    spin: [Vec3; 2],
+}
+
+impl Bodies {
+    /// Those of the whole state `y`.
+    fn of(y: &[f64; N]) -> Bodies {
+        Bodies {
+            vel: VEL.map(|i| v3(y, i)),
+            spin: SPIN.map(|i| v3(y, i)),
+        }
+    }
+
+    /// Those of a reduced state `z` (the entries [`FREE`]), body 1 fixed at rest.
+    fn of_free(z: &[f64; FREE.len()]) -> Bodies {
+        Bodies {
+            vel: [Vec3::new(z[0], z[1], z[2]), Vec3::zeros()],
+            spin: [Vec3::new(z[3], z[4], z[5]), Vec3::zeros()],
+        }
+    }
+
+    /// The whole state with these velocities and spins and the work `work`.
+    fn state(&self, work: f64) -> [f64; N] {
+        let mut y = [0.0; N];
+        for i in 0..2 {
+            put(&mut y, VEL[i], self.vel[i]);
+            put(&mut y, SPIN[i], self.spin[i]);
+        }
+        y[WORK] = work;
+        y
+    }
+
+    /// The reduced state (body 0 and the work).
+    fn free_state(&self, work: f64) -> [f64; FREE.len()] {
+        let (v, w) = (self.vel[0], self.spin[0]);
+        [v.x, v.y, v.z, w.x, w.y, w.z, work]
+    }
+
+    /// Slip of body `i`'s cloth contact point, as [`Contact::cloth_velocity`].
+    fn cloth_slip(&self, i: usize) -> Vec3 {
+        let (v, w) = (self.vel[i], self.spin[i]);
+        Vec3::new(v.x - w.y, v.y + w.x, 0.0)
+    }
+}
+
 impl Contact {
     /// Velocity of body 0's contact point relative to body 1's.
     fn primary_velocity(&self, y: &[f64; N]) -> Vec3 {
@@ -373,17 +421,11 @@ impl Contact {
     /// [`Contact::rhs`] for a mode with no contact at zero slip (every step of most phases),
     /// flattened: the same operations in the same order (so bitwise the same result), without
     /// the general path's intermediate structures, and skipping what a fixed body or a contact
-    /// without friction does not need.
-    fn rhs_slipping(&self, y: &[f64; N], mode: &Mode) -> [f64; N] {
+    /// without friction does not need. Returns the bodies' rates and the work's.
+    fn rhs_slipping(&self, b: &Bodies, mode: &Mode) -> (Bodies, f64) {
         let moving = self.moving();
-        let (v0, w0) = (v3(y, VEL[0]), v3(y, SPIN[0]));
-        let mut u = v0 + w0.cross(&self.arm[0]);
-        // A fixed body's contact point is at rest (+0: subtracting it changes nothing).
-        if moving[1] {
-            u -= v3(y, VEL[1]) + v3(y, SPIN[1]).cross(&self.arm[1]);
-        }
+        let (u, vn) = self.primary_motion(b, moving);
         let n = self.normal;
-        let vn = u.dot(&n);
         let primary = match mode.friction[0] {
             Friction::Slip(r) => -self.mu * slip_direction(u - vn * n, r, mode.zero),
             Friction::Starting(r) => -self.mu * r,
@@ -392,16 +434,22 @@ impl Contact {
         let fz = self.vertical_forces(primary);
         let torque_p = [self.arm[0].cross(&primary), primary.cross(&self.arm[1])];
         let sign = [1.0, -1.0];
-        let mut dy = [0.0; N];
+        let mut d = Bodies {
+            vel: [Vec3::zeros(); 2],
+            spin: [Vec3::zeros(); 2],
+        };
         for i in 0..2 {
             if !moving[i] {
                 continue;
             }
-            let reaction = self.reaction(y, i, fz[i]);
+            let reaction = if self.bodies[i].on_cloth && b.vel[i].z <= 0.0 {
+                (-fz[i]).max(0.0)
+            } else {
+                0.0
+            };
             let c = match mode.friction[1 + i] {
                 Friction::Slip(r) => {
-                    let s = self.cloth_velocity(y, i);
-                    -self.mu_cloth * reaction * slip_direction(s, r, mode.zero)
+                    -self.mu_cloth * reaction * slip_direction(b.cloth_slip(i), r, mode.zero)
                 }
                 Friction::Starting(r) => -self.mu_cloth * reaction * r,
                 _ => Vec3::zeros(),
@@ -409,12 +457,67 @@ impl Contact {
             let mut force = sign[i] * (primary - n) + c;
             force.z += reaction;
             let torque = torque_p[i] + Vec3::new(c.y, -c.x, 0.0);
-            let b = &self.bodies[i];
-            put(&mut dy, VEL[i], b.inv_mass * force);
-            put(&mut dy, SPIN[i], b.inv_inertia * torque);
+            d.vel[i] = self.bodies[i].inv_mass * force;
+            d.spin[i] = self.bodies[i].inv_inertia * torque;
         }
-        dy[WORK] = vn;
-        dy
+        (d, vn)
+    }
+
+    /// Velocity of body 0's contact point relative to body 1's, and its normal part, as
+    /// [`Contact::local`] forms them (a fixed body's contact point is at rest: +0, whose
+    /// subtraction changes nothing).
+    fn primary_motion(&self, b: &Bodies, moving: [bool; 2]) -> (Vec3, f64) {
+        let mut u = b.vel[0] + b.spin[0].cross(&self.arm[0]);
+        if moving[1] {
+            u -= b.vel[1] + b.spin[1].cross(&self.arm[1]);
+        }
+        (u, u.dot(&self.normal))
+    }
+
+    /// [`Contact::events`] for a mode whose primary contact is not at zero slip, flattened as
+    /// [`Contact::rhs_slipping`] (bitwise the same values).
+    fn events_slipping(&self, b: &Bodies, work: f64, mode: &Mode) -> [f64; K] {
+        let moving = self.moving();
+        let (u, vn) = self.primary_motion(b, moving);
+        let mut g = [0.0; K];
+        if mode.compressing {
+            g[0] = vn;
+        } else {
+            g[1] = work - mode.w_target;
+        }
+        for k in 0..3 {
+            if mode.friction[k] == Friction::Off {
+                continue;
+            }
+            let s = if k == 0 {
+                u - vn * self.normal
+            } else {
+                b.cloth_slip(k - 1)
+            };
+            g[2 + k] = match mode.friction[k] {
+                Friction::Slip(r) => {
+                    if s.norm() > 2.0 * mode.zero {
+                        s.dot(&r)
+                    } else {
+                        0.0
+                    }
+                }
+                _ => s.norm() - ESTABLISHED_PER_ZERO * mode.zero,
+            };
+        }
+        let primary = match mode.friction[0] {
+            Friction::Slip(r) => -self.mu * slip_direction(u - vn * self.normal, r, mode.zero),
+            Friction::Starting(r) => -self.mu * r,
+            _ => Vec3::zeros(),
+        };
+        let fz = self.vertical_forces(primary);
+        for i in 0..2 {
+            if self.bodies[i].on_cloth {
+                let vz = b.vel[i].z;
+                g[5 + i] = if vz > 0.0 { vz } else { fz[i] };
+            }
+        }
+        g
     }
 
     /// Which bodies move (a fixed body's velocities stay zero).
@@ -601,7 +704,8 @@ impl Contact {
     /// The slopes under `mode`; `flat` allows [`Contact::rhs_slipping`] where it applies.
     fn rhs(&self, y: &[f64; N], mode: &Mode, flat: bool) -> [f64; N] {
         if flat && !mode.friction.contains(&Friction::AtZero) {
-            return self.rhs_slipping(y, mode);
+            let (d, vn) = self.rhs_slipping(&Bodies::of(y), mode);
+            return d.state(vn);
         }
         let loc = self.local(y);
         self.derivatives(&loc, &self.forces(y, &loc, mode))
@@ -715,13 +819,22 @@ impl Contact {
         flat: bool,
         mut on_step: impl FnMut(f64, &[f64; N]),
     ) -> dopri::Phase<N> {
+        let flat_events = flat && mode.friction[0] != Friction::AtZero;
         let f = |y: &[f64; N]| self.rhs(y, mode, flat);
-        let g = |y: &[f64; N]| self.events(y, mode);
-        if !flat || self.moving()[1] {
+        let g = |y: &[f64; N]| {
+            if flat_events {
+                self.events_slipping(&Bodies::of(y), y[WORK], mode)
+            } else {
+                self.events(y, mode)
+            }
+        };
+        let at_rest = (6..WORK).all(|i| y[i] == 0.0);
+        if !flat || self.moving()[1] || !at_rest {
             return dopri::integrate(&f, &g, p, y, h, tol, ROOT_TOLERANCE, CRAWL_STEPS, on_step);
         }
-        // A fixed body 1 keeps its (zero) velocities: only the other entries are integrated,
-        // nearly halving the integrator's work, with the steps and results of the whole state.
+        // A fixed body 1 (at rest, as a cushion) keeps its velocities: only the other entries
+        // are integrated, nearly halving the integrator's work, with the steps and results of
+        // the whole state.
         let full = |z: &[f64; FREE.len()]| {
             let mut w = y;
             for (j, &i) in FREE.iter().enumerate() {
@@ -730,9 +843,24 @@ impl Contact {
             w
         };
         let part = |w: &[f64; N]| FREE.map(|i| w[i]);
+        let slipping = !mode.friction.contains(&Friction::AtZero);
+        let work = FREE.len() - 1;
         let ph = dopri::integrate_within(
-            &|z| part(&f(&full(z))),
-            &|z| g(&full(z)),
+            &|z| {
+                if slipping {
+                    let (d, vn) = self.rhs_slipping(&Bodies::of_free(z), mode);
+                    d.free_state(vn)
+                } else {
+                    part(&f(&full(z)))
+                }
+            },
+            &|z| {
+                if flat_events {
+                    self.events_slipping(&Bodies::of_free(z), z[work], mode)
+                } else {
+                    g(&full(z))
+                }
+            },
             p,
             part(&y),
             h,
@@ -1038,7 +1166,7 @@ mod tests {
     }
 
     #[test]
-    fn the_flat_slopes_are_the_general_ones_bitwise() {
+    fn the_flat_slopes_and_events_are_the_general_ones_bitwise() {
         let mut rng = Rng(0x5eed_1234_abcd_0001);
         for case in 0..20_000 {
             let (c, _) = random_impact(&mut rng, case % 2 == 1);
@@ -1061,17 +1189,33 @@ mod tests {
             };
             for k in 0..3 {
                 let r = rng.vec(1.0).normalize();
-                mode.friction[k] = match (rng.uniform(0.0, 3.0)) as usize {
+                mode.friction[k] = match (rng.uniform(0.0, 4.0)) as usize {
                     0 => Friction::Off,
                     1 => Friction::Slip(r),
-                    _ => Friction::Starting(r),
+                    2 => Friction::Starting(r),
+                    _ => Friction::AtZero,
                 };
             }
-            assert_eq!(
-                c.rhs(&y, &mode, true),
-                c.rhs(&y, &mode, false),
-                "{c:?} {y:?} {mode:?}"
-            );
+            mode.compressing = rng.uniform(0.0, 1.0) < 0.5;
+            let b = Bodies::of(&y);
+            if mode.friction[0] != Friction::AtZero {
+                let general = c.events(&y, &mode);
+                assert_eq!(
+                    c.events_slipping(&b, y[WORK], &mode),
+                    general,
+                    "{c:?} {y:?}"
+                );
+            }
+            if !mode.friction.contains(&Friction::AtZero) {
+                let general = c.rhs(&y, &mode, false);
+                let (d, vn) = c.rhs_slipping(&b, &mode);
+                assert_eq!(d.state(vn), general, "{c:?} {y:?} {mode:?}");
+                if c.bodies[1].inv_mass == 0.0 {
+                    let z = b.free_state(y[WORK]);
+                    let (d, vn) = c.rhs_slipping(&Bodies::of_free(&z), &mode);
+                    assert_eq!(d.free_state(vn), FREE.map(|i| general[i]));
+                }
+            }
         }
     }
 
