@@ -593,9 +593,9 @@ impl Contact {
     /// frictions in `held` fixed). Its slip rate is affine in its friction F: rate = d + B F.
     /// With Coulomb friction F = -c s (c = mu N) a slip growing as lambda s needs
     /// (lambda I + c B) s = d with |s| = 1 and lambda >= 0; |(lambda I + c B)^-1 d| falls with
-    /// lambda, so lambda is found by bisection (lambda = 0, the edge of holding, gives the
-    /// direction opposite to the holding force, so friction is continuous there). Returns the
-    /// friction, the direction and lambda.
+    /// lambda, so lambda is found in a bracket (by Newton's method, safeguarded by bisection;
+    /// lambda = 0, the edge of holding, gives the direction opposite to the holding force, so
+    /// friction is continuous there). Returns the friction, the direction and lambda.
     fn creep(
         &self,
         y: &[f64; N],
@@ -618,6 +618,7 @@ impl Contact {
             b[0][c] = r[0] - d[0];
             b[1][c] = r[1] - d[1];
         }
+        // s(lambda) = M^-1 d with M = lambda I + c B, and M^-1 s (for d s / d lambda = -M^-1 s).
         let s_of = |lambda: f64| {
             let (a, bb, c, dd) = (
                 lambda + cap * b[0][0],
@@ -626,23 +627,43 @@ impl Contact {
                 lambda + cap * b[1][1],
             );
             let det = a * dd - bb * c;
-            [(dd * d[0] - bb * d[1]) / det, (a * d[1] - c * d[0]) / det]
+            let s = [(dd * d[0] - bb * d[1]) / det, (a * d[1] - c * d[0]) / det];
+            let ms = [(dd * s[0] - bb * s[1]) / det, (a * s[1] - c * s[0]) / det];
+            (s, ms)
         };
         let norm = |v: [f64; 2]| (v[0] * v[0] + v[1] * v[1]).sqrt();
         let mut lambda = 0.0;
-        if norm(s_of(0.0)) > 1.0 {
+        if norm(s_of(0.0).0) > 1.0 {
+            // Newton's method on 1/|s| - 1, nearly linear in lambda (|s| ~ |d| / lambda for
+            // large lambda), so a handful of steps reach rounding; kept strictly inside the
+            // bracket [lo, hi] of the root, halving it whenever a step would not be, and
+            // stopping at the width a bisection of the whole bracket would end at.
             let (mut lo, mut hi) = (0.0, norm(d) + cap * (b[0][0].abs() + b[1][1].abs()) + 1.0);
-            for _ in 0..52 {
-                let mid = 0.5 * (lo + hi);
-                if norm(s_of(mid)) > 1.0 {
-                    lo = mid;
+            let width = hi * f64::EPSILON;
+            for _ in 0..100 {
+                let (s, ms) = s_of(lambda);
+                let ns = norm(s);
+                let g = 1.0 / ns - 1.0;
+                if g == 0.0 {
+                    break;
+                } else if g < 0.0 {
+                    lo = lambda;
                 } else {
-                    hi = mid;
+                    hi = lambda;
+                }
+                let slope = (s[0] * ms[0] + s[1] * ms[1]) / (ns * ns * ns);
+                let mut next = lambda - g / slope;
+                if !(next > lo && next < hi) {
+                    next = 0.5 * (lo + hi);
+                }
+                let done = (next - lambda).abs() <= 1e-15 * next || hi - lo <= width;
+                lambda = next;
+                if done {
+                    break;
                 }
             }
-            lambda = 0.5 * (lo + hi);
         }
-        let s = s_of(lambda);
+        let s = s_of(lambda).0;
         let dir = unit_or(s[0] * t[0] + s[1] * t[1], t[0]);
         (-cap * dir, dir, lambda)
     }
