@@ -422,6 +422,7 @@ impl Contact {
     /// flattened: the same operations in the same order (so bitwise the same result), without
     /// the general path's intermediate structures, and skipping what a fixed body or a contact
     /// without friction does not need. Returns the bodies' rates and the work's.
+    #[inline(always)]
     fn rhs_slipping(&self, b: &Bodies, mode: &Mode) -> (Bodies, f64) {
         let moving = self.moving();
         let (u, vn) = self.primary_motion(b, moving);
@@ -476,6 +477,7 @@ impl Contact {
 
     /// [`Contact::events`] for a mode whose primary contact is not at zero slip, flattened as
     /// [`Contact::rhs_slipping`] (bitwise the same values).
+    #[inline(always)]
     fn events_slipping(&self, b: &Bodies, work: f64, mode: &Mode) -> [f64; K] {
         let moving = self.moving();
         let (u, vn) = self.primary_motion(b, moving);
