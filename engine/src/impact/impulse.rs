@@ -256,6 +256,14 @@ fn solve_dense(a: &mut [[f64; 6]; 6], b: &mut [f64; 6], n: usize) -> Option<()> 
     Some(())
 }
 
+/// A contact's slip rate (in its tangent basis) as an affine function of its friction F:
+/// `at_zero + per_unit F`.
+#[derive(Clone, Copy, Debug)]
+struct Affine {
+    at_zero: [f64; 2],
+    per_unit: [[f64; 2]; 2],
+}
+
 /// Velocities at the contacts in one state, computed once per evaluation.
 #[derive(Clone, Copy, Debug)]
 struct Local {
@@ -562,8 +570,17 @@ impl Contact {
 
     /// Sets in `held` the frictions that keep the slip rates of the contacts in `which` at
     /// zero, the other frictions in `held` fixed. The rates are affine in these frictions, so
-    /// this is one small linear solve.
-    fn hold(&self, y: &[f64; N], loc: &Local, mode: &Mode, held: &mut [Vec3; 3], which: &[usize]) {
+    /// this is one small linear solve. For a single contact, also returns its rates at zero
+    /// friction and their change per unit friction along each tangent (what
+    /// [`Contact::creep`] needs, so that it need not probe them again).
+    fn hold(
+        &self,
+        y: &[f64; N],
+        loc: &Local,
+        mode: &Mode,
+        held: &mut [Vec3; 3],
+        which: &[usize],
+    ) -> Option<Affine> {
         let n = 2 * which.len();
         for &k in which {
             held[k] = Vec3::zeros();
@@ -579,6 +596,10 @@ impl Contact {
                 a[row][col] = r[row] - base[row];
             }
         }
+        let single = (n == 2).then(|| Affine {
+            at_zero: [base[0], base[1]],
+            per_unit: [[a[0][0], a[0][1]], [a[1][0], a[1][1]]],
+        });
         let mut b = [0.0; 6];
         for row in 0..n {
             b[row] = -base[row];
@@ -589,6 +610,7 @@ impl Contact {
                 held[k] = b[2 * j] * t[0] + b[2 * j + 1] * t[1];
             }
         }
+        single
     }
 
     /// How contact `k`, at zero slip and unable to hold, creeps out of zero (the other
@@ -605,21 +627,31 @@ impl Contact {
         mode: &Mode,
         held: &[Vec3; 3],
         k: usize,
+        known: Option<Affine>,
     ) -> (Vec3, Vec3, f64) {
         let t = self.tangents(k);
         let mut probe = *held;
         probe[k] = Vec3::zeros();
-        let d6 = self.rates(y, loc, mode, &probe, &[k]);
-        let d = [d6[0], d6[1]];
         let cap =
             self.coefficient(k) * self.normal_force(&self.forces_with(y, loc, mode, &probe), k);
-        let mut b = [[0.0; 2]; 2];
-        for c in 0..2 {
-            probe[k] = t[c];
-            let r = self.rates(y, loc, mode, &probe, &[k]);
-            b[0][c] = r[0] - d[0];
-            b[1][c] = r[1] - d[1];
-        }
+        let Affine {
+            at_zero: d,
+            per_unit: b,
+        } = known.unwrap_or_else(|| {
+            let d6 = self.rates(y, loc, mode, &probe, &[k]);
+            let d = [d6[0], d6[1]];
+            let mut b = [[0.0; 2]; 2];
+            for c in 0..2 {
+                probe[k] = t[c];
+                let r = self.rates(y, loc, mode, &probe, &[k]);
+                b[0][c] = r[0] - d[0];
+                b[1][c] = r[1] - d[1];
+            }
+            Affine {
+                at_zero: d,
+                per_unit: b,
+            }
+        });
         // s(lambda) = M^-1 d with M = lambda I + c B, and M^-1 s (for d s / d lambda = -M^-1 s).
         let s_of = |lambda: f64| {
             let (a, bb, c, dd) = (
@@ -694,7 +726,9 @@ impl Contact {
             if n == 0 {
                 break;
             }
-            self.hold(y, loc, mode, &mut held, &which_at[..n]);
+            // Alone at zero, the contact's rates as `hold` probed them are those `creep` needs
+            // (the other frictions are the same).
+            let single = self.hold(y, loc, mode, &mut held, &which_at[..n]);
             let f = self.forces_with(y, loc, mode, &held);
             let excess = |k: usize| held[k].norm() - self.coefficient(k) * self.normal_force(&f, k);
             let worst = which_at[..n]
@@ -703,7 +737,7 @@ impl Contact {
                 .filter(|&k| excess(k) > 0.0)
                 .max_by(|&a, &b| excess(a).total_cmp(&excess(b)));
             let Some(k) = worst else { break };
-            let (force, dir, lambda) = self.creep(y, loc, mode, &held, k);
+            let (force, dir, lambda) = self.creep(y, loc, mode, &held, k, single);
             held[k] = force;
             creeping[k] = Some((dir, lambda));
         }
