@@ -68,28 +68,113 @@ pub fn step<const N: usize, F: Fn(&[f64; N]) -> [f64; N]>(
 ) -> ([f64; N], [f64; N], [[f64; N]; 7]) {
     let mut k = [[0.0; N]; 7];
     k[0] = *k1;
-    for s in 1..7 {
-        let mut yi = *y;
-        for (j, kj) in k.iter().enumerate().take(s) {
-            let a = C[s - 1][j];
-            if a != 0.0 {
-                for (yv, kv) in yi.iter_mut().zip(kj) {
-                    *yv += h * a * kv;
-                }
-            }
-        }
-        if s == 6 {
-            // The seventh stage is evaluated at the fifth-order solution itself (FSAL).
-            k[6] = f(&yi);
-            let mut err = [0.0; N];
-            for (i, e) in err.iter_mut().enumerate() {
-                *e = h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>();
-            }
-            return (yi, err, k);
-        }
-        k[s] = f(&yi);
+    let mut y1 = [0.0; N];
+    stages(f, y, h, &mut k, &mut y1);
+    let mut err = [0.0; N];
+    for (i, e) in err.iter_mut().enumerate() {
+        *e = h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>();
     }
-    unreachable!("the loop returns at its last stage")
+    (y1, err, k)
+}
+
+/// Fills stages 2-7 of a step of size `h` from `y` (stage 1, the slope at `y`, given in
+/// `k[0]`) and the fifth-order solution `y1`, in place: the stepper copies nothing larger
+/// than a state.
+fn stages<const N: usize, F: Fn(&[f64; N]) -> [f64; N]>(
+    f: &F,
+    y: &[f64; N],
+    h: f64,
+    k: &mut [[f64; N]; 7],
+    y1: &mut [f64; N],
+) {
+    // Each stage spelt out, so that its sum over the previous stages has a constant length
+    // (unrolled by the compiler).
+    k[1] = f(&combine::<N, 1>(y, h, &C[0], k));
+    k[2] = f(&combine::<N, 2>(y, h, &C[1], k));
+    k[3] = f(&combine::<N, 3>(y, h, &C[2], k));
+    k[4] = f(&combine::<N, 4>(y, h, &C[3], k));
+    k[5] = f(&combine::<N, 5>(y, h, &C[4], k));
+    // The seventh stage is evaluated at the fifth-order solution itself (FSAL).
+    *y1 = combine::<N, 6>(y, h, &C[5], k);
+    k[6] = f(y1);
+}
+
+/// y + h sum_j a_j k_j over the first `S` stages.
+fn combine<const N: usize, const S: usize>(
+    y: &[f64; N],
+    h: f64,
+    a: &[f64; 6],
+    k: &[[f64; N]; 7],
+) -> [f64; N] {
+    let mut out = [0.0; N];
+    for i in 0..N {
+        let mut acc = 0.0;
+        for j in 0..S {
+            acc += a[j] * k[j][i];
+        }
+        out[i] = y[i] + h * acc;
+    }
+    out
+}
+
+/// Error norm (as [`error_norm`], the mean taken over `dim` components) of the step from `y0`
+/// to `y1` of size `h` with stages `k`, without forming the error vector.
+fn step_error<const N: usize>(
+    y0: &[f64; N],
+    y1: &[f64; N],
+    k: &[[f64; N]; 7],
+    h: f64,
+    tol: f64,
+    dim: usize,
+) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..N {
+        let mut e = 0.0;
+        for j in 0..7 {
+            e += E[j] * k[j][i];
+        }
+        let sc = tol * (1.0 + y0[i].abs().max(y1[i].abs()));
+        let r = h * e / sc;
+        sum += r * r;
+    }
+    (sum / dim as f64).sqrt()
+}
+
+/// The continuous extension of one step in Horner form, its coefficients formed once so that
+/// each evaluation (root finding needs several) costs a few operations per component.
+struct Dense<const N: usize> {
+    y0: [f64; N],
+    rc: [[f64; N]; 4],
+}
+
+impl<const N: usize> Dense<N> {
+    fn new(y0: &[f64; N], y1: &[f64; N], k: &[[f64; N]; 7], h: f64) -> Dense<N> {
+        let mut rc = [[0.0; N]; 4];
+        for i in 0..N {
+            let rc2 = y1[i] - y0[i];
+            let rc3 = h * k[0][i] - rc2;
+            rc[0][i] = rc2;
+            rc[1][i] = rc3;
+            rc[2][i] = rc2 - h * k[6][i] - rc3;
+            let mut d = 0.0;
+            for j in 0..7 {
+                d += D[j] * k[j][i];
+            }
+            rc[3][i] = h * d;
+        }
+        Dense { y0: *y0, rc }
+    }
+
+    fn at(&self, theta: f64) -> [f64; N] {
+        let mut out = [0.0; N];
+        let u = 1.0 - theta;
+        for i in 0..N {
+            let r = &self.rc;
+            out[i] =
+                self.y0[i] + theta * (r[0][i] + u * (r[1][i] + theta * (r[2][i] + u * r[3][i])));
+        }
+        out
+    }
 }
 
 /// The state at fraction `theta` of a step from `y0` to `y1` of size `h` with stages `k`
@@ -101,16 +186,7 @@ pub fn dense<const N: usize>(
     h: f64,
     theta: f64,
 ) -> [f64; N] {
-    let mut out = [0.0; N];
-    for i in 0..N {
-        let rc2 = y1[i] - y0[i];
-        let rc3 = h * k[0][i] - rc2;
-        let rc4 = rc2 - h * k[6][i] - rc3;
-        let rc5 = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
-        out[i] =
-            y0[i] + theta * (rc2 + (1.0 - theta) * (rc3 + theta * (rc4 + (1.0 - theta) * rc5)));
-    }
-    out
+    Dense::new(y0, y1, k, h).at(theta)
 }
 
 /// Error norm of a step (RMS of the error scaled by `atol + rtol |y|`).
@@ -164,6 +240,30 @@ pub fn integrate<const N: usize, const K: usize, F, G, S>(
     tol: f64,
     root_tol: f64,
     max_steps: usize,
+    on_step: S,
+) -> Phase<N>
+where
+    F: Fn(&[f64; N]) -> [f64; N],
+    G: Fn(&[f64; N]) -> [f64; K],
+    S: FnMut(f64, &[f64; N]),
+{
+    integrate_within(f, g, x0, y0, h0, tol, root_tol, max_steps, N, on_step)
+}
+
+/// [`integrate`] for the non-constant components of a larger system, `dim` components in all,
+/// whose others stay constant: the error norm is the RMS over all `dim` (the constant ones
+/// contributing zero), so the steps, and the results, are those of the whole system.
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_within<const N: usize, const K: usize, F, G, S>(
+    f: &F,
+    g: &G,
+    x0: f64,
+    y0: [f64; N],
+    h0: f64,
+    tol: f64,
+    root_tol: f64,
+    max_steps: usize,
+    dim: usize,
     mut on_step: S,
 ) -> Phase<N>
 where
@@ -173,16 +273,20 @@ where
 {
     let (mut x, mut y, mut h) = (x0, y0, h0);
     let mut g0 = g(&y);
-    let mut k1 = f(&y);
-    // Error norm of the last accepted step, for the PI step-size controller.
-    let mut en_old: f64 = 1e-4;
+    // Stage slopes, reused from step to step: k[0] is the slope at y (first same as last).
+    let mut k = [[0.0; N]; 7];
+    k[0] = f(&y);
+    let mut y1 = [0.0; N];
+    // The 64th root of the error norm of the last accepted step, for the PI controller.
+    let root_floor = root64(1e-4);
+    let mut q_old = root_floor;
     for steps in 0..max_steps {
-        let (y1, err, stages) = step(f, &y, &k1, h);
-        let en = error_norm(&y, &y1, &err, tol);
+        stages(f, &y, h, &mut k, &mut y1);
+        let en = step_error(&y, &y1, &k, h, tol, dim);
         if en.is_nan() || en > 1.0 {
             // Rejected (or NaN): shrink and retry.
             h *= if en.is_finite() {
-                (0.9 * en.powf(-0.2)).clamp(0.1, 0.9)
+                (0.9 * (-0.2 * en.ln()).exp()).clamp(0.1, 0.9)
             } else {
                 0.1
             };
@@ -194,36 +298,49 @@ where
         let g1 = g(&y1);
         // The earliest event whose sign changed within this step.
         let mut best: Option<(f64, usize, [f64; N])> = None;
-        for k in 0..K {
-            let armed = g0[k] != 0.0;
-            if armed && (g1[k] == 0.0 || (g1[k] > 0.0) != (g0[k] > 0.0)) {
-                let (hk, yk) = locate(g, &y, &y1, &stages, h, k, g0[k], g1[k], root_tol);
-                if best.is_none_or(|b| hk < b.0) {
-                    best = Some((hk, k, yk));
+        let mut ext: Option<Dense<N>> = None;
+        for e in 0..K {
+            let armed = g0[e] != 0.0;
+            if armed && (g1[e] == 0.0 || (g1[e] > 0.0) != (g0[e] > 0.0)) {
+                let (he, ye) = if g1[e] == 0.0 {
+                    (h, y1)
+                } else {
+                    let d = ext.get_or_insert_with(|| Dense::new(&y, &y1, &k, h));
+                    let at = |t: f64| g(&d.at(t))[e];
+                    let t = illinois(&at, 0.0, 1.0, g0[e], g1[e], root_tol, 200);
+                    (t * h, d.at(t))
+                };
+                if best.is_none_or(|b| he < b.0) {
+                    best = Some((he, e, ye));
                 }
             }
         }
-        // PI control (Gustafsson 1991; Hairer, Norsett and Wanner §II.4, as in DOPRI5):
-        // h_new = h 0.9 en^-(0.2 - 0.75 beta) en_old^beta with beta = 0.04.
-        let grow = (0.9 * en.max(1e-10).powf(-0.17) * en_old.powf(0.04)).clamp(0.2, 10.0);
-        if let Some((hk, k, yk)) = best {
-            on_step(x + hk, &yk);
+        // PI control (Gustafsson 1991; Hairer, Norsett and Wanner §II.4):
+        // h_new = h 0.9 en^-alpha en_old^beta, with alpha = 11/64 and beta = 3/64 (DOPRI5's
+        // 0.17 and 0.04, rounded to 64ths so that the powers are six square roots and a few
+        // products rather than logarithms and exponentials).
+        let q = root64(en.max(1e-10));
+        let (q2, q_old2) = (q * q, q_old * q_old);
+        let q11 = q2 * q2 * q2 * q2 * q2 * q;
+        let grow = (0.9 * q_old2 * q_old / q11).clamp(0.2, 10.0);
+        if let Some((he, e, ye)) = best {
+            on_step(x + he, &ye);
             return Phase {
-                x: x + hk,
-                y: yk,
-                stop: Stop::Event(k),
-                h: (h * grow).max(hk),
+                x: x + he,
+                y: ye,
+                stop: Stop::Event(e),
+                h: (h * grow).max(he),
                 steps: steps + 1,
             };
         }
-        en_old = en.max(1e-4);
+        q_old = q.max(root_floor);
         x += h;
         y = y1;
         on_step(x, &y);
         // A function that was exactly zero becomes armed once it leaves zero.
         g0 = g1;
         // First same as last: the final stage is the slope at the new point.
-        k1 = stages[6];
+        k[0] = k[6];
         h *= grow;
     }
     Phase {
@@ -235,29 +352,9 @@ where
     }
 }
 
-/// Finds the fraction of a step at which event `k` crosses zero, on the step's continuous
-/// extension; returns the step size to it and the state there.
-#[allow(clippy::too_many_arguments)]
-fn locate<const N: usize, const K: usize, G>(
-    g: &G,
-    y0: &[f64; N],
-    y1: &[f64; N],
-    stages: &[[f64; N]; 7],
-    h: f64,
-    k: usize,
-    ga: f64,
-    gb: f64,
-    root_tol: f64,
-) -> (f64, [f64; N])
-where
-    G: Fn(&[f64; N]) -> [f64; K],
-{
-    if gb == 0.0 {
-        return (h, *y1);
-    }
-    let at = |t: f64| g(&dense(y0, y1, stages, h, t))[k];
-    let t = illinois(&at, 0.0, 1.0, ga, gb, root_tol, 200);
-    (t * h, dense(y0, y1, stages, h, t))
+/// x^(1/64), by six square roots.
+fn root64(x: f64) -> f64 {
+    x.sqrt().sqrt().sqrt().sqrt().sqrt().sqrt()
 }
 
 /// Root of `f` in [a, b] (values `fa`, `fb` of opposite signs) by the Illinois method, to
