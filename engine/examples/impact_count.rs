@@ -2,9 +2,12 @@
 //! unlike timings on a shared machine): `impact_count bb|cushion n` under
 //! `valgrind --tool=callgrind`; the difference between n = 1000 and n = 0, over 1000, is the
 //! count per impact.
+#[path = "../../benches/cases/mod.rs"]
+mod cases;
+
 use snooker_engine::impact::ball_ball::mathavan as bb;
 use snooker_engine::impact::cushion::mathavan as cush;
-use snooker_engine::{BallState, Motion, Params, Vec3};
+use snooker_engine::{Params, Vec3};
 use std::hint::black_box;
 
 fn main() {
@@ -12,23 +15,8 @@ fn main() {
     let which = args.next().unwrap_or_default();
     let n: usize = args.next().map(|s| s.parse().unwrap()).unwrap_or(1);
     let p = Params::default();
-    let r = p.ball_radius;
-    let cut = 30f64.to_radians();
-    let cue = BallState {
-        pos: Vec3::new(0.0, 0.0, r),
-        vel: Vec3::new(2.0, 0.0, 0.0),
-        spin: Vec3::new(0.0, 2.0 / r, 1.0 / r),
-        motion: Motion::Rolling,
-    };
-    let red = BallState::at_rest(2.0 * r * cut.cos(), 2.0 * r * cut.sin(), r);
-    let a = 45f64.to_radians();
-    let v = Vec3::new(a.cos(), -a.sin(), 0.0);
-    let ball = BallState {
-        pos: Vec3::new(1.0, p.cushion_contact_distance(), r),
-        vel: v,
-        spin: Vec3::z().cross(&v) / r,
-        motion: Motion::Rolling,
-    };
+    let (cue, red) = cases::ball_ball(&p);
+    let ball = cases::cushion(&p);
     for _ in 0..n {
         if which == "bb" {
             black_box(bb::resolve(black_box(&cue), black_box(&red), &p).unwrap());
