@@ -99,45 +99,38 @@ fn stages<const N: usize, F: Fn(&[f64; N]) -> [f64; N]>(
     k[6] = f(y1);
 }
 
-/// y + h sum_j a_j k_j over the first `S` stages.
+/// y + h sum_j a_j k_j over the first `S` stages. The newest stage is added last, to a sum
+/// of the others formed while it was being evaluated, so that only one product and one sum
+/// stand between a stage and the next evaluation (each step is a chain of evaluations).
 fn combine<const N: usize, const S: usize>(
     y: &[f64; N],
     h: f64,
     a: &[f64; 6],
     k: &[[f64; N]; 7],
 ) -> [f64; N] {
+    let ha: [f64; S] = std::array::from_fn(|j| h * a[j]);
     let mut out = [0.0; N];
     for i in 0..N {
-        let mut acc = 0.0;
-        for j in 0..S {
-            acc += a[j] * k[j][i];
+        let mut acc = y[i];
+        for j in 0..S - 1 {
+            acc += ha[j] * k[j][i];
         }
-        out[i] = y[i] + h * acc;
+        out[i] = acc + ha[S - 1] * k[S - 1][i];
     }
     out
 }
 
-/// Error norm (as [`error_norm`], the mean taken over `dim` components) of the step from `y0`
-/// to `y1` of size `h` with stages `k`, without forming the error vector.
-fn step_error<const N: usize>(
-    y0: &[f64; N],
-    y1: &[f64; N],
-    k: &[[f64; N]; 7],
-    h: f64,
-    tol: f64,
-    dim: usize,
-) -> f64 {
-    let mut sum = 0.0;
-    for i in 0..N {
-        let mut e = 0.0;
+/// The error estimate of the step of size `h` with stages `k`.
+fn step_error<const N: usize>(k: &[[f64; N]; 7], h: f64) -> [f64; N] {
+    let mut err = [0.0; N];
+    for (i, e) in err.iter_mut().enumerate() {
+        let mut acc = 0.0;
         for j in 0..7 {
-            e += E[j] * k[j][i];
+            acc += E[j] * k[j][i];
         }
-        let sc = tol * (1.0 + y0[i].abs().max(y1[i].abs()));
-        let r = h * e / sc;
-        sum += r * r;
+        *e = h * acc;
     }
-    (sum / dim as f64).sqrt()
+    err
 }
 
 /// The continuous extension of one step in Horner form, its coefficients formed once so that
@@ -189,15 +182,38 @@ pub fn dense<const N: usize>(
     Dense::new(y0, y1, k, h).at(theta)
 }
 
-/// Error norm of a step (RMS of the error scaled by `atol + rtol |y|`).
-pub fn error_norm<const N: usize>(y0: &[f64; N], y1: &[f64; N], err: &[f64; N], tol: f64) -> f64 {
-    let sum: f64 = (0..N)
-        .map(|i| {
-            let sc = tol * (1.0 + y0[i].abs().max(y1[i].abs()));
-            (err[i] / sc).powi(2)
-        })
-        .sum();
-    (sum / N as f64).sqrt()
+/// Sum over the components of the squared error of a step from `y0` to `y1`, each scaled by
+/// `tol (1 + |y|)` (absolute and relative tolerance `tol`, the larger |y| of the two ends).
+pub fn mixed_sum<const N: usize>(y0: &[f64; N], y1: &[f64; N], err: &[f64; N], tol: f64) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..N {
+        let r = err[i] / (tol * (1.0 + y0[i].abs().max(y1[i].abs())));
+        sum += r * r;
+    }
+    sum
+}
+
+/// How a step's error is measured: the step is accepted when the measure is at most 1.
+pub trait ErrorMeasure<const N: usize> {
+    /// The size of the error estimate `err` of the step from `y0` to `y1`.
+    fn measure(&self, y0: &[f64; N], y1: &[f64; N], err: &[f64; N]) -> f64;
+}
+
+/// The usual measure: the RMS, over `dim` components (more than the state's when it stands
+/// for a larger system whose other components are constant), of the error scaled by
+/// `tol (1 + |y|)`.
+#[derive(Clone, Copy, Debug)]
+pub struct Mixed {
+    /// Absolute and relative tolerance.
+    pub tol: f64,
+    /// Number of components the mean is taken over.
+    pub dim: usize,
+}
+
+impl<const N: usize> ErrorMeasure<N> for Mixed {
+    fn measure(&self, y0: &[f64; N], y1: &[f64; N], err: &[f64; N]) -> f64 {
+        (mixed_sum(y0, y1, err, self.tol) / self.dim as f64).sqrt()
+    }
 }
 
 /// Why a phase of integration stopped.
@@ -227,48 +243,26 @@ pub struct Phase<const N: usize> {
 /// Integrates dy/dx = f(y) from (x0, y0) until one of the event functions `g` changes sign
 /// (a function that is exactly zero at the start is armed only once it is non-zero), then
 /// locates that root to `root_tol` on the step's continuous extension (Illinois method), so
-/// the stop state is as accurate as the integrator at no extra slope evaluation.
+/// the stop state is as accurate as the integrator at no extra slope evaluation. Steps are
+/// accepted when their error, as `measure` sizes it, is at most 1.
 /// `on_step` sees every accepted point (for traces).
 /// Gives up (with [`Stop::Failed`] and the state reached) after `max_steps` steps.
 #[allow(clippy::too_many_arguments)]
-pub fn integrate<const N: usize, const K: usize, F, G, S>(
+pub fn integrate<const N: usize, const K: usize, F, G, M, S>(
     f: &F,
     g: &G,
     x0: f64,
     y0: [f64; N],
     h0: f64,
-    tol: f64,
+    measure: &M,
     root_tol: f64,
     max_steps: usize,
-    on_step: S,
-) -> Phase<N>
-where
-    F: Fn(&[f64; N]) -> [f64; N],
-    G: Fn(&[f64; N]) -> [f64; K],
-    S: FnMut(f64, &[f64; N]),
-{
-    integrate_within(f, g, x0, y0, h0, tol, root_tol, max_steps, N, on_step)
-}
-
-/// [`integrate`] for the non-constant components of a larger system, `dim` components in all,
-/// whose others stay constant: the error norm is the RMS over all `dim` (the constant ones
-/// contributing zero), so the steps, and the results, are those of the whole system.
-#[allow(clippy::too_many_arguments)]
-pub fn integrate_within<const N: usize, const K: usize, F, G, S>(
-    f: &F,
-    g: &G,
-    x0: f64,
-    y0: [f64; N],
-    h0: f64,
-    tol: f64,
-    root_tol: f64,
-    max_steps: usize,
-    dim: usize,
     mut on_step: S,
 ) -> Phase<N>
 where
     F: Fn(&[f64; N]) -> [f64; N],
     G: Fn(&[f64; N]) -> [f64; K],
+    M: ErrorMeasure<N>,
     S: FnMut(f64, &[f64; N]),
 {
     let (mut x, mut y, mut h) = (x0, y0, h0);
@@ -277,12 +271,12 @@ where
     let mut k = [[0.0; N]; 7];
     k[0] = f(&y);
     let mut y1 = [0.0; N];
-    // The 64th root of the error norm of the last accepted step, for the PI controller.
+    // The 64th root of the error measure of the last accepted step, for the PI controller.
     let root_floor = root64(1e-4);
     let mut q_old = root_floor;
     for steps in 0..max_steps {
         stages(f, &y, h, &mut k, &mut y1);
-        let en = step_error(&y, &y1, &k, h, tol, dim);
+        let en = measure.measure(&y, &y1, &step_error(&k, h));
         if en.is_nan() || en > 1.0 {
             // Rejected (or NaN): shrink and retry.
             h *= if en.is_finite() {
@@ -406,7 +400,8 @@ mod tests {
     fn integrates_the_exponential_to_tolerance() {
         let f = |y: &[f64; 1]| [y[0]];
         let g = |y: &[f64; 1]| [y[0] - 10f64.exp()];
-        let ph = integrate(&f, &g, 0.0, [1.0], 0.1, 1e-12, 1e-12, 10_000, |_, _| {});
+        let tol = Mixed { tol: 1e-12, dim: 1 };
+        let ph = integrate(&f, &g, 0.0, [1.0], 0.1, &tol, 1e-12, 10_000, |_, _| {});
         assert_eq!(ph.stop, Stop::Event(0));
         assert!((ph.x - 10.0).abs() < 1e-9, "{}", ph.x);
     }
@@ -434,7 +429,7 @@ mod tests {
             0.0,
             [0.0, 3.0],
             10.0,
-            1e-10,
+            &Mixed { tol: 1e-10, dim: 2 },
             1e-14,
             10_000,
             |_, _| {},

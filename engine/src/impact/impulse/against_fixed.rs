@@ -75,6 +75,20 @@ impl AgainstFixed {
         primary.z - self.n.z
     }
 
+    /// The slips at the nose and at the cloth (and none under the fixed body) of the reduced
+    /// state `z`, as [`Contact::local`] forms them.
+    #[inline(always)]
+    pub(super) fn slips(&self, z: &[f64; DIM]) -> [Vec3; 3] {
+        let v = Vec3::new(z[0], z[1], z[2]);
+        let w = Vec3::new(z[3], z[4], z[5]);
+        let (u, vn) = self.contact_velocity(v, w);
+        [
+            u - vn * self.n,
+            Vec3::new(v.x - w.y, v.y + w.x, 0.0),
+            Vec3::zeros(),
+        ]
+    }
+
     /// The slopes of the reduced state `z`.
     #[inline(always)]
     pub(super) fn slopes(&self, z: &[f64; DIM]) -> [f64; DIM] {

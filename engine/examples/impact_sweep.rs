@@ -1,0 +1,66 @@
+//! Convergence of the impact solvers over random impacts (`tests/sweep`): for each, the
+//! largest difference (fraction of the speed V; spins as R w / V) between the velocities after
+//! the impact at the default tolerance (or those given) and a converged solution, for the
+//! ball-ball or the cushion model. Prints the distribution, and the five worst impacts with
+//! the converged solution's own sensitivity (its change, per 1e-9, when the approach speed
+//! changes by one part in 1e9: an error far above that is the solver's, not the problem's).
+//!
+//! `cargo run --release -p snooker-engine --example impact_sweep -- bb|cushion N [TOL...]`
+#[path = "../../tests/sweep/mod.rs"]
+mod sweep;
+
+use snooker_engine::Params;
+use snooker_engine::impact::impulse::TOLERANCE;
+use sweep::{CONVERGED, Rng, convergence, difference, random_impact};
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let cushion = match args.next().as_deref() {
+        Some("bb") => false,
+        Some("cushion") => true,
+        _ => {
+            eprintln!("usage: impact_sweep bb|cushion N [TOL...]");
+            std::process::exit(2);
+        }
+    };
+    let n: usize = args
+        .next()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(20_000)
+        .max(1);
+    let mut tols: Vec<f64> = args.filter_map(|s| s.parse().ok()).collect();
+    if tols.is_empty() {
+        tols.push(TOLERANCE);
+    }
+    let p = Params::default();
+    let (r, mass) = (p.ball_radius, p.ball_mass);
+    let mut rng = Rng(sweep::SEED);
+    let impacts: Vec<_> = (0..n).map(|_| random_impact(&mut rng, cushion)).collect();
+    for tol in tols {
+        let mut errors: Vec<(f64, usize)> = Vec::with_capacity(n);
+        let mut steps = 0;
+        for (i, impact) in impacts.iter().enumerate() {
+            let (err, s) = convergence(impact, tol);
+            errors.push((err, i));
+            steps += s;
+        }
+        errors.sort_by(|a, b| a.0.total_cmp(&b.0));
+        println!(
+            "tolerance {tol:e}: mean steps {:.1}; error (fraction of V) median {:.2e}, 99th percentile {:.2e}, worst {:.2e}",
+            steps as f64 / n as f64,
+            errors[n / 2].0,
+            errors[n * 99 / 100].0,
+            errors[n - 1].0
+        );
+        for &(err, i) in errors.iter().rev().take(5) {
+            let impact = &impacts[i];
+            let c = &impact.contact;
+            let fine = c.solve_to(&impact.kin, r, mass, CONVERGED, None).unwrap();
+            let mut nudged = impact.kin;
+            nudged.vel[0] *= 1.0 + 1e-9;
+            let moved = c.solve_to(&nudged, r, mass, CONVERGED, None).unwrap();
+            let gain = difference(&moved.after, &fine.after, impact.speed, r) / 1e-9;
+            println!("  {err:.2e}  {}; sensitivity {gain:.1}", impact.text);
+        }
+    }
+}
