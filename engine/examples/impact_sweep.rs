@@ -11,9 +11,10 @@ mod sweep;
 
 use snooker_engine::Params;
 use snooker_engine::impact::impulse::TOLERANCE;
+use std::io::Write;
 use sweep::{CONVERGED, Rng, convergence, difference, random_impact};
 
-fn main() {
+fn main() -> std::io::Result<()> {
     let mut args = std::env::args().skip(1);
     let cushion = match args.next().as_deref() {
         Some("bb") => false,
@@ -36,6 +37,7 @@ fn main() {
     let (r, mass) = (p.ball_radius, p.ball_mass);
     let mut rng = Rng(sweep::SEED);
     let impacts: Vec<_> = (0..n).map(|_| random_impact(&mut rng, cushion)).collect();
+    let mut out = std::io::stdout().lock();
     for tol in tols {
         let mut errors: Vec<(f64, usize)> = Vec::with_capacity(n);
         let mut steps = 0;
@@ -45,13 +47,14 @@ fn main() {
             steps += s;
         }
         errors.sort_by(|a, b| a.0.total_cmp(&b.0));
-        println!(
+        writeln!(
+            out,
             "tolerance {tol:e}: mean steps {:.1}; error (fraction of V) median {:.2e}, 99th percentile {:.2e}, worst {:.2e}",
             steps as f64 / n as f64,
             errors[n / 2].0,
             errors[n * 99 / 100].0,
             errors[n - 1].0
-        );
+        )?;
         for &(err, i) in errors.iter().rev().take(5) {
             let impact = &impacts[i];
             let c = &impact.contact;
@@ -60,7 +63,8 @@ fn main() {
             nudged.vel[0] *= 1.0 + 1e-9;
             let moved = c.solve_to(&nudged, r, mass, CONVERGED, None).unwrap();
             let gain = difference(&moved.after, &fine.after, impact.speed, r) / 1e-9;
-            println!("  {err:.2e}  {}; sensitivity {gain:.1}", impact.text);
+            writeln!(out, "  {err:.2e}  {}; sensitivity {gain:.1}", impact.text)?;
         }
     }
+    Ok(())
 }

@@ -216,6 +216,24 @@ impl<const N: usize> ErrorMeasure<N> for Mixed {
     }
 }
 
+/// Event functions of a state: a change of sign of one ends a phase of integration.
+pub trait Events<const N: usize, const K: usize> {
+    /// All of them at `y`.
+    fn all(&self, y: &[f64; N]) -> [f64; K];
+
+    /// Event `e` alone at `y` (what a root search evaluates, several times), the same value
+    /// as `all(y)[e]`.
+    fn one(&self, y: &[f64; N], e: usize) -> f64 {
+        self.all(y)[e]
+    }
+}
+
+impl<const N: usize, const K: usize, F: Fn(&[f64; N]) -> [f64; K]> Events<N, K> for F {
+    fn all(&self, y: &[f64; N]) -> [f64; K] {
+        self(y)
+    }
+}
+
 /// Why a phase of integration stopped.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Stop {
@@ -261,12 +279,12 @@ pub fn integrate<const N: usize, const K: usize, F, G, M, S>(
 ) -> Phase<N>
 where
     F: Fn(&[f64; N]) -> [f64; N],
-    G: Fn(&[f64; N]) -> [f64; K],
+    G: Events<N, K>,
     M: ErrorMeasure<N>,
     S: FnMut(f64, &[f64; N]),
 {
     let (mut x, mut y, mut h) = (x0, y0, h0);
-    let mut g0 = g(&y);
+    let mut g0 = g.all(&y);
     // Stage slopes, reused from step to step: k[0] is the slope at y (first same as last).
     let mut k = [[0.0; N]; 7];
     k[0] = f(&y);
@@ -289,7 +307,7 @@ where
             }
             continue;
         }
-        let g1 = g(&y1);
+        let g1 = g.all(&y1);
         // The earliest event whose sign changed within this step.
         let mut best: Option<(f64, usize, [f64; N])> = None;
         let mut ext: Option<Dense<N>> = None;
@@ -300,7 +318,7 @@ where
                     (h, y1)
                 } else {
                     let d = ext.get_or_insert_with(|| Dense::new(&y, &y1, &k, h));
-                    let at = |t: f64| g(&d.at(t))[e];
+                    let at = |t: f64| g.one(&d.at(t), e);
                     let t = illinois(&at, 0.0, 1.0, g0[e], g1[e], root_tol, 200);
                     (t * h, d.at(t))
                 };

@@ -6,6 +6,7 @@
 
 use super::{Contact, ESTABLISHED_PER_ZERO, Friction, K, Mode, slip_direction};
 use crate::ball::Vec3;
+use crate::impact::dopri::Events;
 
 /// Length of the reduced state: velocity, spin (units of V), work.
 pub(super) const DIM: usize = 7;
@@ -118,6 +119,35 @@ impl AgainstFixed {
         [dv.x, dv.y, dv.z, dw.x, dw.y, dw.z, vn]
     }
 
+    /// The event function of a contact under `law` whose slip is `s`: it changes sign when
+    /// the slip turns through 90 degrees from the phase's, or drops to zero with it; a slip
+    /// growing out of zero crosses zero when it is established.
+    #[inline(always)]
+    fn slip_event(&self, law: Friction, s: Vec3) -> f64 {
+        match law {
+            Friction::Off => 0.0,
+            Friction::Slip(r) => {
+                if s.norm() > 2.0 * self.zero {
+                    s.dot(&r)
+                } else {
+                    0.0
+                }
+            }
+            _ => s.norm() - ESTABLISHED_PER_ZERO * self.zero,
+        }
+    }
+
+    /// The event function of the support: the ball's vertical speed while it is up, the
+    /// vertical force on it while it is down.
+    #[inline(always)]
+    fn support_event(&self, vz: f64, slip: Vec3) -> f64 {
+        if vz > 0.0 {
+            vz
+        } else {
+            self.vertical_force(self.primary_friction(slip))
+        }
+    }
+
     /// The event functions at the reduced state `z`, as [`Contact::events`] orders them.
     #[inline(always)]
     pub(super) fn events(&self, z: &[f64; DIM]) -> [f64; K] {
@@ -131,30 +161,41 @@ impl AgainstFixed {
             g[1] = z[DIM - 1] - self.w_target;
         }
         let slip = u - vn * self.n;
-        let cloth_slip = Vec3::new(v.x - w.y, v.y + w.x, 0.0);
-        for (k, (law, s)) in [(self.primary, slip), (self.cloth, cloth_slip)]
-            .into_iter()
-            .enumerate()
-        {
-            g[2 + k] = match law {
-                Friction::Off => 0.0,
-                Friction::Slip(r) => {
-                    if s.norm() > 2.0 * self.zero {
-                        s.dot(&r)
-                    } else {
-                        0.0
-                    }
-                }
-                _ => s.norm() - ESTABLISHED_PER_ZERO * self.zero,
-            };
-        }
+        g[2] = self.slip_event(self.primary, slip);
+        g[3] = self.slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0));
         if self.on_cloth {
-            g[5] = if v.z > 0.0 {
-                v.z
-            } else {
-                self.vertical_force(self.primary_friction(slip))
-            };
+            g[5] = self.support_event(v.z, slip);
         }
         g
+    }
+
+    /// Event `e` alone at the reduced state `z` (the same value as in [`Self::events`]),
+    /// computing only what it needs.
+    #[inline(always)]
+    fn event(&self, z: &[f64; DIM], e: usize) -> f64 {
+        let v = Vec3::new(z[0], z[1], z[2]);
+        let w = Vec3::new(z[3], z[4], z[5]);
+        let slip = || {
+            let (u, vn) = self.contact_velocity(v, w);
+            u - vn * self.n
+        };
+        match e {
+            0 if self.compressing => self.contact_velocity(v, w).1,
+            1 if !self.compressing => z[DIM - 1] - self.w_target,
+            2 => self.slip_event(self.primary, slip()),
+            3 => self.slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0)),
+            5 if self.on_cloth => self.support_event(v.z, slip()),
+            _ => 0.0,
+        }
+    }
+}
+
+impl Events<DIM, K> for AgainstFixed {
+    fn all(&self, z: &[f64; DIM]) -> [f64; K] {
+        self.events(z)
+    }
+
+    fn one(&self, z: &[f64; DIM], e: usize) -> f64 {
+        self.event(z, e)
     }
 }
