@@ -11,34 +11,7 @@ use snooker_engine::impact::impulse::Kinematics;
 use snooker_engine::motion::{self, Transition};
 use snooker_engine::{BallState, EventKind, Motion, Params, Vec3};
 
-/// The thesis's ball-ball set-up (§6.1.4.1) in the table frame: the cue ball moves along +x
-/// at `v`, the object ball sits at cut angle `cut` (line of centres at `cut` from +x, to the
-/// left); topspin `k` V/R about the axis of rolling, sidespin `m` V/R about +z.
-fn pair(v: f64, cut: f64, k: f64, m: f64, p: &Params) -> (BallState, BallState) {
-    let r = p.ball_radius;
-    let cue = BallState {
-        pos: Vec3::new(0.0, 0.0, r),
-        vel: Vec3::new(v, 0.0, 0.0),
-        spin: Vec3::new(0.0, k * v / r, m * v / r),
-        motion: Motion::Sliding,
-    };
-    let obj = BallState::at_rest(2.0 * r * cut.cos(), 2.0 * r * cut.sin(), r);
-    (cue, obj)
-}
-
-/// A ball meeting the cushion along y = 0 (plan normal +y) at `incidence` from the cushion
-/// line, with topspin `k` V/R (1 = rolling) and sidespin `m` V/R.
-fn at_cushion(v: f64, incidence: f64, k: f64, m: f64, p: &Params) -> BallState {
-    let r = p.ball_radius;
-    let vel = v * Vec3::new(incidence.cos(), -incidence.sin(), 0.0);
-    let roll = Vec3::z().cross(&vel) / r;
-    BallState {
-        pos: Vec3::new(1.0, p.cushion_contact_distance(), r),
-        vel,
-        spin: k * roll + Vec3::new(0.0, 0.0, m * v / r),
-        motion: Motion::Sliding,
-    }
-}
+use sweep::{at_cushion, pair};
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-12)

@@ -29,6 +29,35 @@ impl Rng {
     }
 }
 
+/// The thesis's ball-ball set-up (§6.1.4.1) in the table frame: the cue ball moves along +x
+/// at `v`, the object ball sits at cut angle `cut` (line of centres at `cut` from +x, to the
+/// left); topspin `k` V/R about the axis of rolling, sidespin `m` V/R about +z.
+pub fn pair(v: f64, cut: f64, k: f64, m: f64, p: &Params) -> (BallState, BallState) {
+    let r = p.ball_radius;
+    let cue = BallState {
+        pos: Vec3::new(0.0, 0.0, r),
+        vel: Vec3::new(v, 0.0, 0.0),
+        spin: Vec3::new(0.0, k * v / r, m * v / r),
+        motion: Motion::Sliding,
+    };
+    let obj = BallState::at_rest(2.0 * r * cut.cos(), 2.0 * r * cut.sin(), r);
+    (cue, obj)
+}
+
+/// A ball meeting the cushion along y = 0 (plan normal +y) at `incidence` from the cushion
+/// line, with topspin `k` V/R (1 = rolling) and sidespin `m` V/R.
+pub fn at_cushion(v: f64, incidence: f64, k: f64, m: f64, p: &Params) -> BallState {
+    let r = p.ball_radius;
+    let vel = v * Vec3::new(incidence.cos(), -incidence.sin(), 0.0);
+    let roll = Vec3::z().cross(&vel) / r;
+    BallState {
+        pos: Vec3::new(1.0, p.cushion_contact_distance(), r),
+        vel,
+        spin: k * roll + Vec3::new(0.0, 0.0, m * v / r),
+        motion: Motion::Sliding,
+    }
+}
+
 /// One impact: what it is, its contact problem and velocities, and its speed V (m/s).
 pub struct Impact {
     /// Speed, angle, spins and coefficients, for people.
@@ -62,32 +91,19 @@ pub fn random_impact(rng: &mut Rng, cushion: bool) -> Impact {
         mu_slide: ms,
         ..Params::default()
     };
-    let r = p.ball_radius;
     let text = format!(
         "v {v:.3} m/s, angle {:.1} deg, topspin {k:.3}, sidespin {m:.3}, mu {mu:.3}, e {e:.3}, mu_s {ms:.3}",
         angle.to_degrees()
     );
     let (contact, kin) = if cushion {
-        let vel = v * Vec3::new(angle.cos(), -angle.sin(), 0.0);
-        let s = BallState {
-            pos: Vec3::new(1.0, p.cushion_contact_distance(), r),
-            vel,
-            spin: k * Vec3::z().cross(&vel) / r + Vec3::new(0.0, 0.0, m * v / r),
-            motion: Motion::Sliding,
-        };
+        let s = at_cushion(v, angle, k, m, &p);
         let kin = Kinematics {
             vel: [s.vel, Vec3::zeros()],
             spin: [s.spin, Vec3::zeros()],
         };
         (cush::contact(&s, Vec3::y(), &p), kin)
     } else {
-        let cue = BallState {
-            pos: Vec3::new(0.0, 0.0, r),
-            vel: Vec3::new(v, 0.0, 0.0),
-            spin: Vec3::new(0.0, k * v / r, m * v / r),
-            motion: Motion::Sliding,
-        };
-        let red = BallState::at_rest(2.0 * r * angle.cos(), 2.0 * r * angle.sin(), r);
+        let (cue, red) = pair(v, angle, k, m, &p);
         let kin = Kinematics {
             vel: [cue.vel, red.vel],
             spin: [cue.spin, red.spin],

@@ -342,6 +342,24 @@ fn slip_direction(s: Vec3, chosen: Vec3, zero: f64) -> Vec3 {
     if n > zero { s * (1.0 / n) } else { chosen }
 }
 
+/// The event function of a frictional contact under `law` whose slip is `s`: it changes sign
+/// when the slip turns through 90 degrees from the phase's direction, and drops to exactly zero
+/// when the slip comes down to zero (a slip growing out of zero arms it without a sign change);
+/// a slip creeping out of zero crosses zero when it is established.
+fn slip_event(law: Friction, s: Vec3, zero: f64) -> f64 {
+    match law {
+        Friction::Off => 0.0,
+        Friction::Slip(r) => {
+            if s.norm() > 2.0 * zero {
+                s.dot(&r)
+            } else {
+                0.0
+            }
+        }
+        Friction::AtZero | Friction::Starting(_) => s.norm() - ESTABLISHED_PER_ZERO * zero,
+    }
+}
+
 /// Offsets of each body's velocity and spin in the state vector.
 const VEL: [usize; 2] = [0, 6];
 const SPIN: [usize; 2] = [3, 9];
@@ -616,16 +634,7 @@ impl Contact {
             } else {
                 b.cloth_slip(k - 1)
             };
-            g[2 + k] = match mode.friction[k] {
-                Friction::Slip(r) => {
-                    if s.norm() > 2.0 * mode.zero {
-                        s.dot(&r)
-                    } else {
-                        0.0
-                    }
-                }
-                _ => s.norm() - ESTABLISHED_PER_ZERO * mode.zero,
-            };
+            g[2 + k] = slip_event(mode.friction[k], s, mode.zero);
         }
         let primary = match mode.friction[0] {
             Friction::Slip(r) => -self.mu * slip_direction(u - vn * self.normal, r, mode.zero),
@@ -891,24 +900,7 @@ impl Contact {
             g[1] = y[WORK] - mode.w_target;
         }
         for k in 0..3 {
-            g[2 + k] = match mode.friction[k] {
-                Friction::Off => 0.0,
-                Friction::Slip(r) => {
-                    // Changes sign when the slip turns through 90 degrees, and drops to exactly
-                    // zero when the slip comes down to zero; a slip growing out of zero arms it
-                    // without a sign change.
-                    let s = loc.slip[k];
-                    if s.norm() > 2.0 * mode.zero {
-                        s.dot(&r)
-                    } else {
-                        0.0
-                    }
-                }
-                // A slip creeping out of zero is established.
-                Friction::AtZero | Friction::Starting(_) => {
-                    loc.slip[k].norm() - ESTABLISHED_PER_ZERO * mode.zero
-                }
-            };
+            g[2 + k] = slip_event(mode.friction[k], loc.slip[k], mode.zero);
         }
         let primary = if mode.friction[0] == Friction::AtZero {
             self.forces(y, &loc, mode).primary

@@ -4,7 +4,7 @@
 //! the reduced state (the ball's velocity and spin, and the work) with the mode resolved once
 //! per phase; the same operations in the same order, so bitwise the same values (tested).
 
-use super::{Contact, ESTABLISHED_PER_ZERO, Friction, K, Mode, slip_direction};
+use super::{Contact, Friction, K, Mode, slip_direction, slip_event};
 use crate::ball::Vec3;
 use crate::impact::dopri::Events;
 
@@ -119,24 +119,6 @@ impl AgainstFixed {
         [dv.x, dv.y, dv.z, dw.x, dw.y, dw.z, vn]
     }
 
-    /// The event function of a contact under `law` whose slip is `s`: it changes sign when
-    /// the slip turns through 90 degrees from the phase's, or drops to zero with it; a slip
-    /// growing out of zero crosses zero when it is established.
-    #[inline(always)]
-    fn slip_event(&self, law: Friction, s: Vec3) -> f64 {
-        match law {
-            Friction::Off => 0.0,
-            Friction::Slip(r) => {
-                if s.norm() > 2.0 * self.zero {
-                    s.dot(&r)
-                } else {
-                    0.0
-                }
-            }
-            _ => s.norm() - ESTABLISHED_PER_ZERO * self.zero,
-        }
-    }
-
     /// The event function of the support: the ball's vertical speed while it is up, the
     /// vertical force on it while it is down.
     #[inline(always)]
@@ -161,8 +143,8 @@ impl AgainstFixed {
             g[1] = z[DIM - 1] - self.w_target;
         }
         let slip = u - vn * self.n;
-        g[2] = self.slip_event(self.primary, slip);
-        g[3] = self.slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0));
+        g[2] = slip_event(self.primary, slip, self.zero);
+        g[3] = slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0), self.zero);
         if self.on_cloth {
             g[5] = self.support_event(v.z, slip);
         }
@@ -182,8 +164,8 @@ impl AgainstFixed {
         match e {
             0 if self.compressing => self.contact_velocity(v, w).1,
             1 if !self.compressing => z[DIM - 1] - self.w_target,
-            2 => self.slip_event(self.primary, slip()),
-            3 => self.slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0)),
+            2 => slip_event(self.primary, slip(), self.zero),
+            3 => slip_event(self.cloth, Vec3::new(v.x - w.y, v.y + w.x, 0.0), self.zero),
             5 if self.on_cloth => self.support_event(v.z, slip()),
             _ => 0.0,
         }
