@@ -13,7 +13,11 @@ use std::hint::black_box;
 fn main() {
     let mut args = std::env::args().skip(1);
     let which = args.next().unwrap_or_default();
-    let n: usize = args.next().map(|s| s.parse().unwrap()).unwrap_or(1);
+    let n: Option<usize> = args.next().map_or(Some(1), |s| s.parse().ok());
+    let (Some(n), "bb" | "cushion") = (n, which.as_str()) else {
+        eprintln!("usage: impact_count bb|cushion [N (default 1)]");
+        std::process::exit(2);
+    };
     let p = Params::default();
     let (cue, red) = cases::ball_ball(&p);
     let ball = cases::cushion(&p);

@@ -15,21 +15,36 @@ use std::io::Write;
 use sweep::{CONVERGED, Rng, convergence, difference, random_impact};
 
 fn main() -> std::io::Result<()> {
+    let usage = || -> ! {
+        eprintln!("usage: impact_sweep bb|cushion [N (default 20000)] [TOL...] (TOL > 0)");
+        std::process::exit(2);
+    };
     let mut args = std::env::args().skip(1);
     let cushion = match args.next().as_deref() {
         Some("bb") => false,
         Some("cushion") => true,
-        _ => {
-            eprintln!("usage: impact_sweep bb|cushion N [TOL...]");
-            std::process::exit(2);
-        }
+        _ => usage(),
     };
-    let n: usize = args
-        .next()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(20_000)
-        .max(1);
-    let mut tols: Vec<f64> = args.filter_map(|s| s.parse().ok()).collect();
+    let n: usize = match args.next() {
+        None => 20_000,
+        Some(s) => match s.parse() {
+            Ok(n) if n > 0 => n,
+            _ => {
+                eprintln!("impact_sweep: N must be a positive whole number, not {s:?}");
+                usage()
+            }
+        },
+    };
+    let mut tols = Vec::new();
+    for s in args {
+        match s.parse::<f64>() {
+            Ok(t) if t > 0.0 && t.is_finite() => tols.push(t),
+            _ => {
+                eprintln!("impact_sweep: a tolerance must be a positive number, not {s:?}");
+                usage()
+            }
+        }
+    }
     if tols.is_empty() {
         tols.push(TOLERANCE);
     }
@@ -45,7 +60,11 @@ fn main() -> std::io::Result<()> {
             let (err, s) = convergence(impact, tol);
             errors.push((err, i));
             steps += s;
+            if (i + 1) % (n / 100).max(1) == 0 {
+                eprint!("\rtolerance {tol:e}: {} of {n} impacts", i + 1);
+            }
         }
+        eprintln!();
         errors.sort_by(|a, b| a.0.total_cmp(&b.0));
         writeln!(
             out,
