@@ -140,8 +140,8 @@ impl std::fmt::Display for ImpactError {
 impl std::error::Error for ImpactError {}
 
 /// Tolerance of the integration (scaled units): that of the slips near zero, the velocities'
-/// being `VELOCITY_PER_SLIP_TOLERANCE` times larger ([`SlipAware`]). Results are within 1e-6
-/// of the converged solution over random impacts with frictions up to 0.3 (worst 5.5e-7 in
+/// being 30 times larger (the step error measure, `SlipAware`). Results are within 1e-6 of
+/// the converged solution over random impacts with frictions up to 0.3 (worst 5.5e-7 in
 /// 200,000; tests/impact_models.rs, docs/impact-convergence.md).
 pub const TOLERANCE: f64 = 5e-10;
 /// Event functions (velocities in units of V) are located to this.
@@ -235,7 +235,7 @@ struct Mode {
 
 /// Which of the faster ways through an impact are taken: `flat`, the flattened slopes and the
 /// reduced state of a fixed body (bitwise the same results as the general ones); `establish`,
-/// Heun's step for a slip growing out of zero ([`Contact::establish`]; the same results to
+/// Heun's step for a slip growing out of zero (`impulse/establish.rs`; the same results to
 /// the tolerance). The tests compare each with the general path.
 #[derive(Clone, Copy, Debug)]
 struct Paths {
@@ -1005,16 +1005,16 @@ impl Contact {
                 self.events(y, mode)
             }
         };
+        let run = Run {
+            mode,
+            p,
+            h,
+            establish: paths.establish,
+        };
         let at_rest = (6..WORK).all(|i| y[i] == 0.0);
         if !flat || self.moving()[1] || !at_rest {
             let measure = self.measure(tol);
             let slips = |y: &[f64; N]| self.local(y).slip;
-            let run = Run {
-                mode,
-                p,
-                h,
-                establish: paths.establish,
-            };
             return run.go(y, &f, &g, &slips, &measure, on_step);
         }
         // A fixed body 1 (at rest, as a cushion) keeps its velocities (zero): only the other
@@ -1028,12 +1028,6 @@ impl Contact {
             w
         };
         let part = |w: &[f64; N]| FREE.map(|i| w[i]);
-        let run = Run {
-            mode,
-            p,
-            h,
-            establish: paths.establish,
-        };
         let on_step = |x: f64, z: &[f64; FREE.len()]| on_step(x, &full(z));
         let ph = if let Some(laws) = AgainstFixed::new(self, mode) {
             let slips = |z: &[f64; FREE.len()]| laws.slips(z);
