@@ -6,6 +6,12 @@ use serde::{Deserialize, Serialize};
 /// A 3-vector of f64 in the table frame (x along the table, y across, z up).
 pub type Vec3 = Vector3<f64>;
 
+/// A solid ball's moment of inertia about a diameter over M R^2: I = 2/5 M R^2 (uniform sphere;
+/// thesis §2.4.2).
+pub const INERTIA_FACTOR: f64 = 0.4;
+/// M R^2 / I for a solid ball, the inverse of [`INERTIA_FACTOR`]: 5/2.
+pub const INV_INERTIA_FACTOR: f64 = 2.5;
+
 /// The phase of a ball's motion; each phase has its own closed-form law (see [`crate::motion`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
