@@ -1,12 +1,11 @@
-//! The two impacts of `benches/impacts.rs`, `n` times over, for instruction counts (deterministic,
-//! unlike timings on a shared machine): `impact_count bb|cushion n` under
+//! The two impacts of `engine/benches/impacts.rs`, `n` times over, for instruction counts
+//! (deterministic, unlike timings on a shared machine): `impact_count bb|cushion n` under
 //! `valgrind --tool=callgrind`; the difference between n = 1000 and n = 0, over 1000, is the
 //! count per impact.
-#[path = "../../benches/cases/mod.rs"]
-mod cases;
 
 use snooker_engine::impact::ball_ball::mathavan as bb;
 use snooker_engine::impact::cushion::mathavan as cush;
+use snooker_engine::impact::incoming;
 use snooker_engine::{Params, Vec3};
 use std::hint::black_box;
 
@@ -19,8 +18,8 @@ fn main() {
         std::process::exit(2);
     };
     let p = Params::default();
-    let (cue, red) = cases::ball_ball(&p);
-    let ball = cases::cushion(&p);
+    let (cue, red) = incoming::typical_ball_ball(&p);
+    let ball = incoming::typical_cushion(&p);
     for _ in 0..n {
         if which == "bb" {
             black_box(bb::resolve(black_box(&cue), black_box(&red), &p).unwrap());

@@ -1,4 +1,4 @@
-//! Convergence of the impact solvers over random impacts (`tests/sweep`): for each, the
+//! Convergence of the impact solvers over random impacts (`snooker_engine::impact::sweep`): for each, the
 //! largest difference (fraction of the speed V; spins as R w / V) between the velocities after
 //! the impact at the default tolerance (or those given) and a converged solution, for the
 //! ball-ball or the cushion model. Prints the distribution, and the five worst impacts with
@@ -6,13 +6,10 @@
 //! changes by one part in 1e9: an error far above that is the solver's, not the problem's).
 //!
 //! `cargo run --release -p snooker-engine --example impact_sweep -- bb|cushion N [TOL...]`
-#[path = "../../tests/sweep/mod.rs"]
-mod sweep;
-
 use snooker_engine::Params;
 use snooker_engine::impact::impulse::TOLERANCE;
+use snooker_engine::impact::sweep::{self, CONVERGED, Rng, convergence, difference, random_impact};
 use std::io::Write;
-use sweep::{CONVERGED, Rng, convergence, difference, random_impact};
 
 fn main() -> std::io::Result<()> {
     let usage = || -> ! {

@@ -1290,26 +1290,7 @@ impl Contact {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A small deterministic generator of uniform numbers (xorshift).
-    struct Rng(u64);
-
-    impl Rng {
-        fn uniform(&mut self, a: f64, b: f64) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            a + (b - a) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
-        }
-
-        fn vec(&mut self, a: f64) -> Vec3 {
-            Vec3::new(
-                self.uniform(-a, a),
-                self.uniform(-a, a),
-                self.uniform(-a, a),
-            )
-        }
-    }
+    use crate::impact::sweep::Rng;
 
     /// A ball-ball or ball-cushion contact (as the Mathavan models set them up) and random
     /// velocities that approach, with frictions up to 0.6.

@@ -5,6 +5,8 @@ pub mod ball_ball;
 pub mod cushion;
 pub mod dopri;
 pub mod impulse;
+pub mod incoming;
+pub mod sweep;
 
 use serde::{Deserialize, Serialize};
 

@@ -1,14 +1,15 @@
-//! Random impacts and the impact solvers' convergence on them, shared by
-//! `tests/impact_models.rs` (which bounds the error) and `engine/examples/impact_sweep.rs`
-//! (which prints its distribution). Snooker's frictions and beyond: mu_bb and mu_w up to 0.3,
-//! cloth friction up to 0.3, restitution 0.5-1, speeds 0.05-6 m/s, cuts and incidences of
-//! 1-83 degrees, topspin and sidespin up to 2 V/R.
-#![allow(dead_code)]
+//! Random impacts and the impact solvers' convergence on them, for the convergence tests
+//! (`engine/tests/impact_models.rs`, which bound the error) and
+//! `engine/examples/impact_sweep.rs` (which prints its distribution). Snooker's frictions and
+//! beyond: mu_bb and mu_w up to 0.3, cloth friction up to 0.3, restitution 0.5-1, speeds
+//! 0.05-6 m/s, cuts and incidences of 1-83 degrees, topspin and sidespin up to 2 V/R.
 
-use snooker_engine::impact::ball_ball::mathavan as bb;
-use snooker_engine::impact::cushion::mathavan as cush;
-use snooker_engine::impact::impulse::{Contact, Kinematics};
-use snooker_engine::{BallState, Motion, Params, Vec3};
+use super::ball_ball::mathavan as bb;
+use super::cushion::mathavan as cush;
+use super::impulse::{Contact, Kinematics};
+use super::incoming;
+use crate::ball::Vec3;
+use crate::params::Params;
 
 /// Seed of the sweeps (the test's and the example's: the same impacts).
 pub const SEED: u64 = 0x1234_5678_9abc_def1;
@@ -16,7 +17,10 @@ pub const SEED: u64 = 0x1234_5678_9abc_def1;
 /// Tolerance of the converged solutions the others are compared with.
 pub const CONVERGED: f64 = 1e-13;
 
-/// A small deterministic generator of uniform numbers (xorshift).
+/// A small deterministic generator of uniform numbers (Marsaglia's xorshift64, 2003): the
+/// same sequence on every machine, so that a sweep's impacts are the same everywhere. Seed it
+/// with any non-zero value.
+#[derive(Clone, Debug)]
 pub struct Rng(pub u64);
 
 impl Rng {
@@ -27,34 +31,14 @@ impl Rng {
         self.0 ^= self.0 << 17;
         a + (b - a) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
     }
-}
 
-/// The thesis's ball-ball set-up (§6.1.4.1) in the table frame: the cue ball moves along +x
-/// at `v`, the object ball sits at cut angle `cut` (line of centres at `cut` from +x, to the
-/// left); topspin `k` V/R about the axis of rolling, sidespin `m` V/R about +z.
-pub fn pair(v: f64, cut: f64, k: f64, m: f64, p: &Params) -> (BallState, BallState) {
-    let r = p.ball_radius;
-    let cue = BallState {
-        pos: Vec3::new(0.0, 0.0, r),
-        vel: Vec3::new(v, 0.0, 0.0),
-        spin: Vec3::new(0.0, k * v / r, m * v / r),
-        motion: Motion::Sliding,
-    };
-    let obj = BallState::at_rest(2.0 * r * cut.cos(), 2.0 * r * cut.sin(), r);
-    (cue, obj)
-}
-
-/// A ball meeting the cushion along y = 0 (plan normal +y) at `incidence` from the cushion
-/// line, with topspin `k` V/R (1 = rolling) and sidespin `m` V/R.
-pub fn at_cushion(v: f64, incidence: f64, k: f64, m: f64, p: &Params) -> BallState {
-    let r = p.ball_radius;
-    let vel = v * Vec3::new(incidence.cos(), -incidence.sin(), 0.0);
-    let roll = Vec3::z().cross(&vel) / r;
-    BallState {
-        pos: Vec3::new(1.0, p.cushion_contact_distance(), r),
-        vel,
-        spin: k * roll + Vec3::new(0.0, 0.0, m * v / r),
-        motion: Motion::Sliding,
+    /// A vector with components uniform in [-a, a).
+    pub fn vec(&mut self, a: f64) -> Vec3 {
+        Vec3::new(
+            self.uniform(-a, a),
+            self.uniform(-a, a),
+            self.uniform(-a, a),
+        )
     }
 }
 
@@ -96,14 +80,14 @@ pub fn random_impact(rng: &mut Rng, cushion: bool) -> Impact {
         angle.to_degrees()
     );
     let (contact, kin) = if cushion {
-        let s = at_cushion(v, angle, k, m, &p);
+        let s = incoming::cushion(v, angle, k, m, &p);
         let kin = Kinematics {
             vel: [s.vel, Vec3::zeros()],
             spin: [s.spin, Vec3::zeros()],
         };
         (cush::contact(&s, Vec3::y(), &p), kin)
     } else {
-        let (cue, red) = pair(v, angle, k, m, &p);
+        let (cue, red) = incoming::ball_ball(v, angle, k, m, &p);
         let kin = Kinematics {
             vel: [cue.vel, red.vel],
             spin: [cue.spin, red.spin],

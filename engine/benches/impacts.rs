@@ -1,22 +1,22 @@
 //! Time per impact of each Mathavan model at the default tolerance (results converged to
-//! better than 1e-6 relative, see tests/impact_models.rs). Run with `cargo bench --bench impacts`.
-
-mod cases;
+//! better than 1e-6 relative, see engine/tests/impact_models.rs). Run with
+//! `cargo bench -p snooker-engine --bench impacts`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use snooker_engine::impact::ball_ball::mathavan as bb;
 use snooker_engine::impact::cushion::mathavan as cush;
+use snooker_engine::impact::incoming;
 use snooker_engine::{Params, Vec3};
 use std::hint::black_box;
 
 fn impacts(c: &mut Criterion) {
     let p = Params::default();
-    let (cue, red) = cases::ball_ball(&p);
+    let (cue, red) = incoming::typical_ball_ball(&p);
     c.bench_function(
         "ball-ball mathavan (2 m/s, 30 deg cut, top and side)",
         |b| b.iter(|| bb::resolve(black_box(&cue), black_box(&red), &p).unwrap()),
     );
-    let ball = cases::cushion(&p);
+    let ball = incoming::typical_cushion(&p);
     c.bench_function("cushion mathavan (1 m/s, 45 deg, rolling)", |b| {
         b.iter(|| cush::resolve(black_box(&ball), Vec3::y(), &p).unwrap())
     });
