@@ -3,7 +3,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use snooker::record::{self, RecordOptions};
-use snooker::scene;
+use snooker_scene as scene;
 use std::hint::black_box;
 
 fn export(c: &mut Criterion) {

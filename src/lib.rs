@@ -1,10 +1,9 @@
-//! The `snooker` command-line tool's library: scene files, results and summaries around the
-//! physics in `snooker-engine`.
+//! The `snooker` command-line tool's library: one module per command ([`cmd`]), around the
+//! physics of `snooker-engine` and the formats of `snooker-scene`; Rerun recordings
+//! ([`record`]), plots ([`plot`]), ball colours ([`palette`]) and output files ([`output`]).
 
-pub mod discrepancy_cmd;
-pub mod impact_cmd;
-pub mod measured;
+pub mod cmd;
 pub mod output;
+pub mod palette;
+pub mod plot;
 pub mod record;
-pub mod scene;
-pub mod validate_cmd;

@@ -3,9 +3,9 @@
 
 mod common;
 
-use snooker::scene;
 use snooker_engine::motion::Transition;
 use snooker_engine::{EventKind, Shot, SimOptions, simulate};
+use snooker_scene as scene;
 use std::path::Path;
 
 fn run(name: &str) -> (scene::Scene, Shot) {
@@ -147,7 +147,8 @@ fn the_perpendicular_rebound_stays_on_its_line() {
 #[test]
 fn the_chapter_7_example_strikes_as_the_thesis_describes() {
     let (sc, shot) = run("chapter7-example");
-    let (_, cue, strike) = sc.strike.as_ref().unwrap();
+    let struck = sc.strike.as_ref().unwrap();
+    let (cue, strike) = (&struck.cue, &struck.strike);
     assert!((cue.aim - 0.515).abs() < 1e-12);
     // The first contact is with the object ball (thesis fig. 7.20).
     let first = shot

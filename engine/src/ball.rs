@@ -67,7 +67,7 @@ pub struct BallState {
     pub motion: Motion,
 }
 
-/// Snooker ball kinds: the colour decides the recording's colour and nothing physical.
+/// Snooker ball kinds: the colour, which decides nothing physical.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BallKind {
@@ -111,21 +111,6 @@ impl BallKind {
             .find(|(p, _)| id.starts_with(p))
             .map(|&(_, k)| k)
             .unwrap_or(BallKind::Other)
-    }
-
-    /// sRGB colour of the ball.
-    pub fn rgb(self) -> [u8; 3] {
-        match self {
-            BallKind::Cue => [245, 245, 235],
-            BallKind::Red => [200, 20, 20],
-            BallKind::Yellow => [240, 210, 20],
-            BallKind::Green => [20, 120, 50],
-            BallKind::Brown => [120, 70, 30],
-            BallKind::Blue => [30, 70, 200],
-            BallKind::Pink => [240, 130, 170],
-            BallKind::Black => [15, 15, 15],
-            BallKind::Other => [150, 150, 150],
-        }
     }
 }
 

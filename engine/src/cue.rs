@@ -26,6 +26,8 @@ use serde::{Deserialize, Serialize};
 
 /// Fastest cue speed accepted, m/s (the fastest human breaks reach about 10 m/s).
 pub const MAX_CUE_SPEED: f64 = 15.0;
+/// Largest |aim| accepted, rad: one turn either way covers every heading.
+pub const MAX_AIM: f64 = std::f64::consts::TAU;
 /// Steepest cue accepted, rad (a vertical cue has no heading).
 pub const MAX_ELEVATION: f64 = 89.0 * std::f64::consts::PI / 180.0;
 
@@ -109,6 +111,25 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
                 cue.speed
             ),
         ));
+    }
+    if cue.aim.abs() > MAX_AIM {
+        return Err(err(
+            "aim",
+            format!("a heading must lie in [-2 pi, 2 pi] rad, got {}", cue.aim),
+        ));
+    }
+    for v in cue.offset {
+        if v.abs() > p.ball_radius + p.cue_tip_radius {
+            return Err(err(
+                "offset",
+                format!(
+                    "the cue's axis passes {:.1} mm from the ball's centre and misses it \
+                     (limit {:.1} mm)",
+                    v.abs() * 1e3,
+                    (p.ball_radius + p.cue_tip_radius) * 1e3
+                ),
+            ));
+        }
     }
     if !(0.0..=MAX_ELEVATION).contains(&cue.elevation) {
         return Err(err(

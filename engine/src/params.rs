@@ -1,109 +1,260 @@
-//! Physical parameters, their defaults and where each default comes from.
+//! Physical parameters, their defaults, units, valid ranges and where each default comes from.
 //!
 //! All values are SI. Defaults are the thesis's measured or fitted values
 //! (Mathavan, "Trajectory solutions for a game-playing robot...", cited as
 //! "thesis §x.y"); the few that the thesis does not give are marked as
-//! assumptions with their reason.
+//! assumptions with their reason. Each parameter is declared once, in [`declare_params!`]'s
+//! call below; the struct, its defaults, the table of [`PARAMS`] (name, unit, range, source),
+//! access by name and the range checks are all derived from that one declaration.
 
 use serde::{Deserialize, Serialize};
 
-/// Every physical parameter of a shot.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Params {
-    /// Gravitational acceleration, m/s^2.
-    pub g: f64,
-    /// Ball mass M, kg (thesis §6.1.4.2).
-    pub ball_mass: f64,
-    /// Ball radius R, m (thesis §6.1.4.2).
-    pub ball_radius: f64,
-    /// Ball-cloth sliding friction mu_s (thesis §5.1.1.2, mean of 0.178-0.245).
-    pub mu_slide: f64,
-    /// Rolling resistance mu_r: deceleration / g while rolling (thesis §5.1.1.1, 0.0127-0.0129).
-    pub mu_roll: f64,
-    /// Angular deceleration of sidespin (spin about the vertical), rad/s^2 (thesis §5.3, 21.8 "in the range of 22").
-    pub sidespin_decel: f64,
-    /// Ball-ball restitution e (thesis §6.1.4.3, fitted to the head-on data).
-    pub e_ball: f64,
-    /// Ball-ball friction mu_bb (thesis §6.1.4.3).
-    pub mu_ball: f64,
-    /// Ball-cushion restitution e_e (thesis §6.2.5.1).
-    pub e_cushion: f64,
-    /// Ball-cushion friction mu_w (thesis §6.2.5.1).
-    pub mu_cushion: f64,
-    /// Height of the cushion nose above the cloth, m (thesis §6.2: h = 7R/5; AJP paper: 36 mm).
-    pub cushion_height: f64,
-    /// Effective mass of the cue at the tip along its axis, kg. Assumption: a typical
-    /// 19 oz (0.54 kg) snooker cue; the arm does not take part in the ~1 ms impact (Cross 2008).
-    pub cue_mass: f64,
-    /// Cue tip radius, m (thesis §7.1.2: 10 mm).
-    pub cue_tip_radius: f64,
-    /// Cue tip-ball restitution, fitted so that a centre hit gives the measured
-    /// ball/cue speed ratio of 1.45 with `cue_mass` (thesis §5.1.4).
-    pub cue_tip_restitution: f64,
-    /// Transverse "end mass" of the cue tip, kg, fitted so that a 12 mm side offset gives
-    /// the thesis's 2.5 degree squirt (thesis §2.4.1.3; squirt model of Shepard 1997 / Cross 2008).
-    pub cue_endmass: f64,
-    /// Largest contact offset from the cue axis, as a fraction of R, before a miscue
-    /// (thesis §7.1.2 eq. 7.7, after Alciatore: R/2).
-    pub miscue_limit: f64,
-    /// Tilt of the bed along x, rad (a ball feels g slope_x towards +x). Off (0) by default;
-    /// the thesis's table is taken as level. See [`crate::motion::cloth`].
-    pub slope_x: f64,
-    /// Tilt of the bed along y, rad. Off (0) by default.
-    pub slope_y: f64,
-    /// Sideways acceleration of the cloth's nap, m/s^2 ([`crate::motion::cloth::nap`]). Off
-    /// (0) by default: the thesis found no nap effect (§5.1.1.1).
-    pub nap_drift: f64,
-    /// Sliding friction at zero slip (Witters and Duymelinck: 0.14); equal to `mu_slide` (no
-    /// speed dependence) by default, as the thesis measured none (§5.1.1.2).
-    pub mu_slide_low: f64,
-    /// Slip speed over which sliding friction rises from `mu_slide_low` to `mu_slide`, m/s
-    /// (0 = no speed dependence, the default).
-    pub slide_speed_scale: f64,
-    /// Fall of the cushion's restitution with the normal impact speed above
-    /// `e_cushion_knee`, per m/s: e_e(v) = e_cushion - e_cushion_falloff (v - knee). Off (0) by
-    /// default; the thesis's rigid model holds below about 2.5 m/s (§6.2.5).
-    pub e_cushion_falloff: f64,
-    /// Normal speed above which the cushion's restitution falls, m/s (thesis §6.2.5.1: e_e
-    /// was fitted below 1.5 m/s).
-    pub e_cushion_knee: f64,
-}
+/// The cushion nose's height over the ball radius, h / R = 7/5 (thesis §6.2: the nose touches
+/// the ball at h = 7R/5, so the contact normal rises at sin(theta) = 2/5).
+pub const NOSE_HEIGHT_PER_RADIUS: f64 = 1.4;
 
 /// Thesis §5.1.4: ball speed / cue speed for a centre-ball (stun) strike.
 pub const CENTRE_SPEED_TRANSFER: f64 = 1.45;
 
-impl Default for Params {
-    fn default() -> Self {
-        let ball_mass = 0.1406;
-        let ball_radius = 0.0262;
-        let cue_mass = 0.54;
-        Params {
-            g: 9.81,
-            ball_mass,
-            ball_radius,
-            mu_slide: 0.21,
-            mu_roll: 0.0128,
-            sidespin_decel: 22.0,
-            e_ball: 0.89,
-            mu_ball: 0.05,
-            e_cushion: 0.98,
-            mu_cushion: 0.14,
-            cushion_height: 1.4 * ball_radius,
-            cue_mass,
-            cue_tip_radius: 0.010,
-            // Centre hit: V_ball / V_cue = (1 + e_t) m_c / (m_c + M) = 1.45.
-            cue_tip_restitution: CENTRE_SPEED_TRANSFER * (cue_mass + ball_mass) / cue_mass - 1.0,
-            cue_endmass: squirt_endmass(ball_mass, ball_radius, 0.012, 2.5_f64.to_radians()),
-            miscue_limit: 0.5,
-            slope_x: 0.0,
-            slope_y: 0.0,
-            nap_drift: 0.0,
-            mu_slide_low: 0.21,
-            slide_speed_scale: 0.0,
-            e_cushion_falloff: 0.0,
-            e_cushion_knee: 1.5,
+/// Default ball mass, kg (thesis §6.1.4.2).
+const BALL_MASS: f64 = 0.1406;
+/// Default ball radius, m (thesis §6.1.4.2).
+const BALL_RADIUS: f64 = 0.0262;
+/// Default cue mass, kg (a 19 oz cue).
+const CUE_MASS: f64 = 0.54;
+
+/// One end of a parameter's valid range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Bound {
+    /// The value itself is allowed.
+    Inclusive(f64),
+    /// Values up to (but not including) this one are allowed.
+    Exclusive(f64),
+}
+
+/// The values a parameter may take: a physical range, documented with its reason.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ValidRange {
+    /// Lower end.
+    pub lo: Bound,
+    /// Upper end.
+    pub hi: Bound,
+}
+
+impl ValidRange {
+    /// [lo, hi].
+    pub const fn closed(lo: f64, hi: f64) -> ValidRange {
+        ValidRange {
+            lo: Bound::Inclusive(lo),
+            hi: Bound::Inclusive(hi),
         }
     }
+
+    /// (lo, hi].
+    pub const fn above(lo: f64, hi: f64) -> ValidRange {
+        ValidRange {
+            lo: Bound::Exclusive(lo),
+            hi: Bound::Inclusive(hi),
+        }
+    }
+
+    /// (lo, hi).
+    pub const fn open(lo: f64, hi: f64) -> ValidRange {
+        ValidRange {
+            lo: Bound::Exclusive(lo),
+            hi: Bound::Exclusive(hi),
+        }
+    }
+
+    /// True when `v` lies in the range (false for NaN).
+    pub fn contains(&self, v: f64) -> bool {
+        let lo = match self.lo {
+            Bound::Inclusive(a) => v >= a,
+            Bound::Exclusive(a) => v > a,
+        };
+        let hi = match self.hi {
+            Bound::Inclusive(b) => v <= b,
+            Bound::Exclusive(b) => v < b,
+        };
+        lo && hi
+    }
+
+    /// The smallest and largest values (the ends, open or not).
+    pub fn ends(&self) -> (f64, f64) {
+        let v = |b: Bound| match b {
+            Bound::Inclusive(x) | Bound::Exclusive(x) => x,
+        };
+        (v(self.lo), v(self.hi))
+    }
+}
+
+impl std::fmt::Display for ValidRange {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (open, lo) = match self.lo {
+            Bound::Inclusive(a) => ('[', a),
+            Bound::Exclusive(a) => ('(', a),
+        };
+        let (close, hi) = match self.hi {
+            Bound::Inclusive(b) => (']', b),
+            Bound::Exclusive(b) => (')', b),
+        };
+        write!(f, "{open}{lo}, {hi}{close}")
+    }
+}
+
+/// What is known of one parameter: its scene-file name, unit, valid range and source.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParamInfo {
+    /// Name in scene files' `[params]`, in `--param NAME=VALUE` and in the JSON result.
+    pub name: &'static str,
+    /// SI unit ("1" for a pure number).
+    pub unit: &'static str,
+    /// The values accepted.
+    pub range: ValidRange,
+    /// Where the default comes from (thesis section, paper, or the assumption made).
+    pub source: &'static str,
+}
+
+/// Declares every parameter once: its field (with its doc comment), unit, default, valid
+/// range and source. Generates [`Params`], its `Default`, [`PARAMS`], and access by name.
+macro_rules! declare_params {
+    ($(
+        $(#[doc = $doc:literal])*
+        $name:ident: unit $unit:literal, default $default:expr, range $range:expr,
+            source $source:literal;
+    )*) => {
+        /// Every physical parameter of a shot (see [`PARAMS`] for units, ranges and sources).
+        #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+        pub struct Params {
+            $($(#[doc = $doc])* pub $name: f64,)*
+        }
+
+        impl Default for Params {
+            fn default() -> Self {
+                Params { $($name: $default,)* }
+            }
+        }
+
+        /// Every parameter's name, unit, valid range and source, in declaration order.
+        pub const PARAMS: [ParamInfo; declare_params!(@count $($name)*)] = [
+            $(ParamInfo {
+                name: stringify!($name),
+                unit: $unit,
+                range: $range,
+                source: $source,
+            },)*
+        ];
+
+        impl Params {
+            /// The parameter of this scene-file name, to be set (None for an unknown name).
+            pub fn field_mut(&mut self, name: &str) -> Option<&mut f64> {
+                match name {
+                    $(stringify!($name) => Some(&mut self.$name),)*
+                    _ => None,
+                }
+            }
+
+            /// The parameters as (name, value) pairs, with their scene-file names, in
+            /// declaration order.
+            pub fn named(&self) -> [(&'static str, f64); PARAMS.len()] {
+                [$((stringify!($name), self.$name),)*]
+            }
+        }
+    };
+    (@count) => { 0 };
+    (@count $head:ident $($tail:ident)*) => { 1 + declare_params!(@count $($tail)*) };
+}
+
+declare_params! {
+    /// Gravitational acceleration, m/s^2.
+    g: unit "m/s^2", default 9.81, range ValidRange::closed(1.0, 25.0),
+        source "standard gravity; range: the Moon (1.6) to Jupiter (24.8)";
+    /// Ball mass M, kg (thesis §6.1.4.2).
+    ball_mass: unit "kg", default BALL_MASS, range ValidRange::closed(0.05, 0.5),
+        source "thesis §6.1.4.2";
+    /// Ball radius R, m (thesis §6.1.4.2).
+    ball_radius: unit "m", default BALL_RADIUS, range ValidRange::closed(0.015, 0.04),
+        source "thesis §6.1.4.2; range: below the 90 mm pocket openings (2R <= 80 mm)";
+    /// Ball-cloth sliding friction mu_s (thesis §5.1.1.2, mean of 0.178-0.245).
+    mu_slide: unit "1", default 0.21, range ValidRange::closed(0.0, 1.0),
+        source "thesis §5.1.1.2 (mean of 0.178-0.245)";
+    /// Rolling resistance mu_r: deceleration / g while rolling (thesis §5.1.1.1, 0.0127-0.0129).
+    mu_roll: unit "1", default 0.0128, range ValidRange::closed(0.0, 0.1),
+        source "thesis §5.1.1.1 (0.124-0.126 m/s^2)";
+    /// Angular deceleration of sidespin (spin about the vertical), rad/s^2 (thesis §5.3, 21.8 "in the range of 22").
+    sidespin_decel: unit "rad/s^2", default 22.0, range ValidRange::closed(0.0, 500.0),
+        source "thesis §5.3 (21.8, \"in the range of 22\")";
+    /// Ball-ball restitution e (thesis §6.1.4.3, fitted to the head-on data).
+    e_ball: unit "1", default 0.89, range ValidRange::closed(0.0, 1.0),
+        source "thesis §6.1.4.3";
+    /// Ball-ball friction mu_bb (thesis §6.1.4.3).
+    mu_ball: unit "1", default 0.05, range ValidRange::closed(0.0, 1.0),
+        source "thesis §6.1.4.3";
+    /// Ball-cushion restitution e_e (thesis §6.2.5.1).
+    e_cushion: unit "1", default 0.98, range ValidRange::closed(0.0, 1.0),
+        source "thesis §6.2.5.1";
+    /// Ball-cushion friction mu_w (thesis §6.2.5.1).
+    mu_cushion: unit "1", default 0.14, range ValidRange::closed(0.0, 1.0),
+        source "thesis §6.2.5.1";
+    /// Height of the cushion nose above the cloth, m (thesis §6.2: h = 7R/5; AJP paper: 36 mm).
+    /// It must touch the upper half of the ball, R < h < 2R; it follows a scene's ball radius
+    /// unless given.
+    cushion_height: unit "m", default NOSE_HEIGHT_PER_RADIUS * BALL_RADIUS,
+        range ValidRange::above(0.0, 0.08), source "thesis §6.2 (7R/5)";
+    /// Effective mass of the cue at the tip along its axis, kg. Assumption: a typical
+    /// 19 oz (0.54 kg) snooker cue; the arm does not take part in the ~1 ms impact (Cross 2008).
+    cue_mass: unit "kg", default CUE_MASS, range ValidRange::closed(0.1, 2.0),
+        source "assumption: a 19 oz cue; the arm does not take part in the ~1 ms impact (Cross 2008)";
+    /// Cue tip radius, m (thesis §7.1.2: 10 mm).
+    cue_tip_radius: unit "m", default 0.010, range ValidRange::closed(0.0, 0.02),
+        source "thesis §7.1.2";
+    /// Cue tip-ball restitution, fitted so that a centre hit gives the measured
+    /// ball/cue speed ratio of 1.45 with `cue_mass` (thesis §5.1.4).
+    cue_tip_restitution: unit "1",
+        // Centre hit: V_ball / V_cue = (1 + e_t) m_c / (m_c + M) = 1.45.
+        default CENTRE_SPEED_TRANSFER * (CUE_MASS + BALL_MASS) / CUE_MASS - 1.0,
+        range ValidRange::closed(0.0, 1.0),
+        source "fitted: a centre hit gives the measured ball/cue speed ratio 1.45 (thesis §5.1.4)";
+    /// Transverse "end mass" of the cue tip, kg, fitted so that a 12 mm side offset gives
+    /// the thesis's 2.5 degree squirt (thesis §2.4.1.3; squirt model of Shepard 1997 / Cross 2008).
+    cue_endmass: unit "kg",
+        default squirt_endmass(BALL_MASS, BALL_RADIUS, 0.012, 2.5_f64.to_radians()),
+        range ValidRange::closed(0.0, 0.1),
+        source "fitted: 2.5 deg squirt at 12 mm side offset (thesis §2.4.1.3; Shepard 1997, Cross 2008)";
+    /// Largest contact offset from the cue axis, as a fraction of R, before a miscue
+    /// (thesis §7.1.2 eq. 7.7, after Alciatore: R/2).
+    miscue_limit: unit "1 (fraction of R)", default 0.5, range ValidRange::open(0.0, 1.0),
+        source "thesis eq. 7.7 (Alciatore)";
+    /// Tilt of the bed along x, rad (a ball feels g slope_x towards +x). Off (0) by default;
+    /// the thesis's table is taken as level. See [`crate::motion::cloth`]. Its size, with
+    /// `slope_y`'s, must stay below 7/5 `mu_roll` so that resting balls stay put.
+    slope_x: unit "rad", default 0.0, range ValidRange::closed(-0.05, 0.05),
+        source "level bed assumed (thesis §2.4.2)";
+    /// Tilt of the bed along y, rad. Off (0) by default.
+    slope_y: unit "rad", default 0.0, range ValidRange::closed(-0.05, 0.05),
+        source "level bed assumed (thesis §2.4.2)";
+    /// Sideways acceleration of the cloth's nap, m/s^2 ([`crate::motion::cloth::nap`]). Off
+    /// (0) by default: the thesis found no nap effect (§5.1.1.1).
+    nap_drift: unit "m/s^2", default 0.0, range ValidRange::closed(-0.1, 0.1),
+        source "Williams 2002 (thesis §5.1.1.1: not seen in its data)";
+    /// Sliding friction at zero slip (Witters and Duymelinck: 0.14); equal to `mu_slide` (no
+    /// speed dependence) by default, as the thesis measured none (§5.1.1.2). With a speed
+    /// scale it may not exceed `mu_slide`.
+    mu_slide_low: unit "1", default 0.21, range ValidRange::closed(0.0, 1.0),
+        source "Witters and Duymelinck 1986 (thesis §5.1.1.2: none measured)";
+    /// Slip speed over which sliding friction rises from `mu_slide_low` to `mu_slide`, m/s
+    /// (0 = no speed dependence, the default).
+    slide_speed_scale: unit "m/s", default 0.0, range ValidRange::closed(0.0, 10.0),
+        source "Witters and Duymelinck 1986";
+    /// Fall of the cushion's restitution with the normal impact speed above
+    /// `e_cushion_knee`, per m/s: e_e(v) = e_cushion - e_cushion_falloff (v - knee). Off (0) by
+    /// default; the thesis's rigid model holds below about 2.5 m/s (§6.2.5).
+    e_cushion_falloff: unit "s/m", default 0.0, range ValidRange::closed(0.0, 1.0),
+        source "thesis §5.1.2, §6.2.5";
+    /// Normal speed above which the cushion's restitution falls, m/s (thesis §6.2.5.1: e_e
+    /// was fitted below 1.5 m/s).
+    e_cushion_knee: unit "m/s", default 1.5, range ValidRange::closed(0.0, 30.0),
+        source "thesis §6.2.5.1 (e_e fitted below 1.5 m/s)";
 }
 
 /// The tip end mass that gives a squirt angle `angle` at side offset `b`
@@ -136,7 +287,12 @@ impl std::error::Error for ParamError {}
 impl Params {
     /// Moment of inertia of a solid ball about a diameter, 2 M R^2 / 5.
     pub fn inertia(&self) -> f64 {
-        0.4 * self.ball_mass * self.ball_radius * self.ball_radius
+        crate::ball::INERTIA_FACTOR * self.ball_mass * self.ball_radius * self.ball_radius
+    }
+
+    /// What is known of the parameter named `name` (None for an unknown name).
+    pub fn info(name: &str) -> Option<&'static ParamInfo> {
+        PARAMS.iter().find(|i| i.name == name)
     }
 
     /// sin(theta), where theta is the angle of the cushion contact normal to the
@@ -157,121 +313,26 @@ impl Params {
         (self.e_cushion - self.e_cushion_falloff * (v - self.e_cushion_knee).max(0.0)).max(0.0)
     }
 
-    /// The parameter of this scene-file name, to be set (None for an unknown name).
-    pub fn field_mut(&mut self, name: &str) -> Option<&mut f64> {
-        Some(match name {
-            "g" => &mut self.g,
-            "ball_mass" => &mut self.ball_mass,
-            "ball_radius" => &mut self.ball_radius,
-            "mu_slide" => &mut self.mu_slide,
-            "mu_roll" => &mut self.mu_roll,
-            "sidespin_decel" => &mut self.sidespin_decel,
-            "e_ball" => &mut self.e_ball,
-            "mu_ball" => &mut self.mu_ball,
-            "e_cushion" => &mut self.e_cushion,
-            "mu_cushion" => &mut self.mu_cushion,
-            "cushion_height" => &mut self.cushion_height,
-            "cue_mass" => &mut self.cue_mass,
-            "cue_tip_radius" => &mut self.cue_tip_radius,
-            "cue_tip_restitution" => &mut self.cue_tip_restitution,
-            "cue_endmass" => &mut self.cue_endmass,
-            "miscue_limit" => &mut self.miscue_limit,
-            "slope_x" => &mut self.slope_x,
-            "slope_y" => &mut self.slope_y,
-            "nap_drift" => &mut self.nap_drift,
-            "mu_slide_low" => &mut self.mu_slide_low,
-            "slide_speed_scale" => &mut self.slide_speed_scale,
-            "e_cushion_falloff" => &mut self.e_cushion_falloff,
-            "e_cushion_knee" => &mut self.e_cushion_knee,
-            _ => return None,
-        })
-    }
-
-    /// The parameters as (name, value) pairs, with their scene-file names.
-    pub fn named(&self) -> [(&'static str, f64); 23] {
-        [
-            ("g", self.g),
-            ("ball_mass", self.ball_mass),
-            ("ball_radius", self.ball_radius),
-            ("mu_slide", self.mu_slide),
-            ("mu_roll", self.mu_roll),
-            ("sidespin_decel", self.sidespin_decel),
-            ("e_ball", self.e_ball),
-            ("mu_ball", self.mu_ball),
-            ("e_cushion", self.e_cushion),
-            ("mu_cushion", self.mu_cushion),
-            ("cushion_height", self.cushion_height),
-            ("cue_mass", self.cue_mass),
-            ("cue_tip_radius", self.cue_tip_radius),
-            ("cue_tip_restitution", self.cue_tip_restitution),
-            ("cue_endmass", self.cue_endmass),
-            ("miscue_limit", self.miscue_limit),
-            ("slope_x", self.slope_x),
-            ("slope_y", self.slope_y),
-            ("nap_drift", self.nap_drift),
-            ("mu_slide_low", self.mu_slide_low),
-            ("slide_speed_scale", self.slide_speed_scale),
-            ("e_cushion_falloff", self.e_cushion_falloff),
-            ("e_cushion_knee", self.e_cushion_knee),
-        ]
-    }
-
-    /// Checks that every value is finite and physically meaningful.
+    /// Checks that every value is finite and within its declared range ([`PARAMS`]), and the
+    /// conditions between parameters: the nose on the ball's upper half, sliding friction at
+    /// rest not above `mu_slide`, a tilt that leaves resting balls at rest.
     pub fn validate(&self) -> Result<(), ParamError> {
-        for (name, v) in self.named() {
+        for ((name, v), info) in self.named().into_iter().zip(PARAMS.iter()) {
             if !v.is_finite() {
                 return Err(ParamError {
                     name,
                     reason: format!("must be a finite number, got {v}"),
                 });
             }
-        }
-        let positive = [
-            ("g", self.g),
-            ("ball_mass", self.ball_mass),
-            ("ball_radius", self.ball_radius),
-            ("cue_mass", self.cue_mass),
-        ];
-        for (name, v) in positive {
-            if v <= 0.0 {
+            if !info.range.contains(v) {
+                let unit = if info.unit.starts_with('1') {
+                    String::new()
+                } else {
+                    format!(" {}", info.unit)
+                };
                 return Err(ParamError {
                     name,
-                    reason: format!("must be > 0, got {v}"),
-                });
-            }
-        }
-        let non_negative = [
-            ("mu_slide", self.mu_slide),
-            ("mu_roll", self.mu_roll),
-            ("sidespin_decel", self.sidespin_decel),
-            ("mu_ball", self.mu_ball),
-            ("mu_cushion", self.mu_cushion),
-            ("cue_tip_radius", self.cue_tip_radius),
-            // Zero end mass: no squirt.
-            ("cue_endmass", self.cue_endmass),
-            ("mu_slide_low", self.mu_slide_low),
-            ("slide_speed_scale", self.slide_speed_scale),
-            ("e_cushion_falloff", self.e_cushion_falloff),
-            ("e_cushion_knee", self.e_cushion_knee),
-        ];
-        for (name, v) in non_negative {
-            if v < 0.0 {
-                return Err(ParamError {
-                    name,
-                    reason: format!("must be >= 0, got {v}"),
-                });
-            }
-        }
-        let unit = [
-            ("e_ball", self.e_ball),
-            ("e_cushion", self.e_cushion),
-            ("cue_tip_restitution", self.cue_tip_restitution),
-        ];
-        for (name, v) in unit {
-            if !(0.0..=1.0).contains(&v) {
-                return Err(ParamError {
-                    name,
-                    reason: format!("a restitution coefficient must lie in [0, 1], got {v}"),
+                    reason: format!("must lie in {}{unit}, got {v}", info.range),
                 });
             }
         }
@@ -311,15 +372,6 @@ impl Params {
                 ),
             });
         }
-        if !(self.miscue_limit > 0.0 && self.miscue_limit < 1.0) {
-            return Err(ParamError {
-                name: "miscue_limit",
-                reason: format!(
-                    "must lie in (0, 1) (a fraction of R), got {}",
-                    self.miscue_limit
-                ),
-            });
-        }
         Ok(())
     }
 }
@@ -354,6 +406,39 @@ mod tests {
             "{}",
             p.cue_endmass
         );
+    }
+
+    #[test]
+    fn every_range_is_enforced_by_name() {
+        // One declaration gives every parameter a range; each end is enforced, naming the
+        // parameter (cross-parameter conditions aside).
+        let p = Params::default();
+        for info in PARAMS {
+            assert!(
+                info.range.contains(
+                    *p.named()
+                        .iter()
+                        .find(|(n, _)| *n == info.name)
+                        .map(|(_, v)| v)
+                        .unwrap()
+                ),
+                "{}",
+                info.name
+            );
+            let (lo, hi) = info.range.ends();
+            for bad in [
+                lo - 1e-9 * lo.abs().max(1.0),
+                hi + 1e-9 * hi.abs().max(1.0),
+                1e308,
+                -1e308,
+            ] {
+                let mut q = p;
+                *q.field_mut(info.name).unwrap() = bad;
+                let e = q.validate().unwrap_err();
+                assert_eq!(e.name, info.name, "{bad}: {e}");
+            }
+            assert!(!info.source.is_empty() && !info.unit.is_empty());
+        }
     }
 
     #[test]

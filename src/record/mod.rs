@@ -10,7 +10,6 @@ mod blueprint;
 pub mod sample;
 mod table;
 
-use crate::scene::Scene;
 use rerun::external::re_log_types::{EntityPath, EntityPathPart};
 use rerun::{
     Arrows3D, Color, Ellipsoids3D, FillMode, LineStrips3D, Points3D, RecordingStream,
@@ -20,6 +19,7 @@ use rerun::{
 use sample::{Schedule, Side};
 use snooker_engine::sim::Track;
 use snooker_engine::{BallState, EventKind, Motion, Params, Shot, Vec3};
+use snooker_scene::Scene;
 use std::collections::VecDeque;
 
 /// The recording's timeline: simulated time, s.
@@ -257,7 +257,7 @@ impl Ball<'_> {
     fn log(&self) -> Result<(), RecordError> {
         let id = self.track.id.as_str();
         let r = self.params.ball_radius;
-        let colour = rgb(self.track.kind.rgb());
+        let colour = rgb(crate::palette::ball(self.track.kind));
         let in_play: Vec<bool> = self.states.iter().map(|s| s.motion.in_play()).collect();
         let all = || self.times.clone();
 
@@ -309,7 +309,12 @@ impl Ball<'_> {
         let marker = path(&["balls", id, "body"], "marker");
         let rings = marker_rings(r * 1.004);
         // Light rings on the dark balls (black, green), dark ones on the others.
-        let ring_colour = if self.track.kind.rgb().iter().map(|&c| c as u32).sum::<u32>() < 200 {
+        let ring_colour = if crate::palette::ball(self.track.kind)
+            .iter()
+            .map(|&c| c as u32)
+            .sum::<u32>()
+            < 200
+        {
             Color::from_rgb(230, 230, 230)
         } else {
             Color::from_rgb(20, 20, 20)
@@ -406,7 +411,7 @@ impl Ball<'_> {
                 Side::After(_) => true,
             })
             .collect();
-        let [r, g, b] = self.track.kind.rgb();
+        let [r, g, b] = crate::palette::ball(self.track.kind);
         let parts = TRAIL_ALPHA.len();
         let part = TRAIL_SECONDS / parts as f64;
         let mut rows = Vec::new();
@@ -496,7 +501,7 @@ impl Ball<'_> {
     /// Time series: speed |v|, slip speed at the cloth |u|, spin components. Gaps (NaN) after
     /// the ball is pocketed, and for the slip while it is airborne.
     fn log_plots(&self, id: &str, r: f64) -> Result<(), RecordError> {
-        let colour = rgb(self.track.kind.rgb());
+        let colour = rgb(crate::palette::ball(self.track.kind));
         let speed: Vec<f64> = self
             .states
             .iter()

@@ -21,7 +21,7 @@ fn spec(file: &str) -> SceneSpec {
         .find(|(f, _)| *f == file)
         .map(|(_, t)| *t)
         .unwrap_or_else(|| panic!("no scene {file}"));
-    let s = snooker::scene::parse(text, file).expect("validation scene parses");
+    let s = snooker_scene::parse(text, file).expect("validation scene parses");
     SceneSpec {
         name: s.name,
         setup: s.setup,

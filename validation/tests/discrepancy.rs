@@ -9,7 +9,7 @@ use snooker_engine::{Ball, BallKind, BallState, Models, Motion, Params, Setup, T
 use snooker_validation::discrepancy::data::StrikeSpec;
 use snooker_validation::discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
 use snooker_validation::discrepancy::{
-    Effect, Measurement, Model, Nuisance, Options, Outcome, ShotData, run,
+    Effect, Findings, Measurement, Model, Nuisance, Options, ShotData, run,
 };
 
 const NOISE: f64 = 5e-4;
@@ -164,7 +164,7 @@ fn without(effects: &[Effect]) -> Model {
         .fold(default_model(), |m, e| e.switch_off(&m))
 }
 
-fn report(o: &Outcome) -> String {
+fn report(o: &Findings) -> String {
     let mut s = format!(
         "baseline gap {:.2} mm, chi2/dof {:.2}\n",
         o.baseline_state.gap.rms * 1e3,

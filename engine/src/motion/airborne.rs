@@ -18,6 +18,13 @@ pub fn duration(s: &BallState, p: &Params) -> f64 {
     (vz + (vz * vz + 2.0 * p.g * h).sqrt()) / p.g
 }
 
+/// Height of the flight's peak above the resting height R, m: the present height plus
+/// vz^2 / 2g while rising.
+pub fn peak_height(s: &BallState, p: &Params) -> f64 {
+    let h = (s.pos.z - p.ball_radius).max(0.0);
+    h + s.vel.z.max(0.0).powi(2) / (2.0 * p.g)
+}
+
 /// State after `dt` seconds of flight.
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
     let mut out = *s;

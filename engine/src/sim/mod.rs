@@ -7,220 +7,32 @@
 //! searched only within the window where both laws hold. Stale candidates are dropped when
 //! popped.
 
+pub mod error;
 pub mod event;
 pub mod queue;
+pub mod setup;
 pub mod shot;
 
-use crate::ball::{Ball, BallState, Motion};
+use crate::ball::{BallState, Motion, Vec3};
 use crate::detect;
-use crate::impact::Models;
 use crate::motion;
 use crate::params::Params;
-use crate::table::Table;
+pub use error::SimError;
 pub use event::{Event, EventKind};
 use queue::{Candidate, Entry, Queue};
-use serde::{Deserialize, Serialize};
+pub use setup::{Setup, SetupError, SimOptions};
 pub use shot::{Ending, Segment, Shot, Stats, Track};
 
-/// Limits of one simulation.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SimOptions {
-    /// Most events a shot may have before it is stopped with an error.
-    pub max_events: usize,
-    /// Most events at one and the same instant before the shot is stopped with an error.
-    pub max_events_at_instant: usize,
-    /// Simulated time within which every ball must come to rest, s.
-    pub max_time: f64,
-    /// Stop (without error) at this time even if balls still move.
-    pub horizon: Option<f64>,
-}
-
-impl Default for SimOptions {
-    fn default() -> Self {
-        SimOptions {
-            max_events: 100_000,
-            max_events_at_instant: 10_000,
-            max_time: 3600.0,
-            horizon: None,
-        }
-    }
-}
-
-/// Everything a shot starts from.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Setup {
-    /// The table.
-    pub table: Table,
-    /// Physical parameters.
-    pub params: Params,
-    /// Impact models.
-    pub models: Models,
-    /// The balls with their starting states.
-    pub balls: Vec<Ball>,
-}
-
-/// A setup that cannot be simulated.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SetupError {
-    /// Index of the ball at fault, if one is.
-    pub ball: Option<usize>,
-    /// The field at fault ("pos", "vel", "spin", "id", or a parameter name).
-    pub field: String,
-    /// Why.
-    pub reason: String,
-}
-
-impl std::fmt::Display for SetupError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self.ball {
-            Some(i) => write!(f, "balls[{i}].{}: {}", self.field, self.reason),
-            None => write!(f, "{}: {}", self.field, self.reason),
-        }
-    }
-}
-
-impl std::error::Error for SetupError {}
-
-/// Why a simulation stopped without finishing the shot.
-#[derive(Clone, Debug, PartialEq)]
-pub enum SimError {
-    /// The setup is invalid.
-    Setup(SetupError),
-    /// More than `max_events` events.
-    TooManyEvents {
-        /// The limit.
-        limit: usize,
-        /// Time reached, s.
-        t: f64,
-    },
-    /// More than `max_events_at_instant` events without time advancing.
-    Stuck {
-        /// The instant, s.
-        t: f64,
-        /// Events at that instant.
-        count: usize,
-    },
-    /// Balls still moving after `max_time`.
-    DidNotStop {
-        /// The limit, s.
-        max_time: f64,
-    },
-    /// An impact model failed to converge (a bug: reported rather than passed on).
-    Impact {
-        /// Balls involved.
-        balls: Vec<String>,
-        /// Time, s.
-        t: f64,
-        /// What failed.
-        reason: String,
-    },
-    /// A non-finite number appeared (a bug: reported rather than passed on).
-    NonFinite {
-        /// Ball id.
-        ball: String,
-        /// Time, s.
-        t: f64,
-    },
-}
-
-impl std::fmt::Display for SimError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            SimError::Setup(e) => write!(f, "{e}"),
-            SimError::TooManyEvents { limit, t } => write!(
-                f,
-                "the shot exceeded {limit} events (at t = {t:.6} s); stopped as a runaway"
-            ),
-            SimError::Stuck { t, count } => write!(
-                f,
-                "{count} events at the same instant t = {t:.9} s without time advancing; stopped"
-            ),
-            SimError::DidNotStop { max_time } => write!(
-                f,
-                "balls were still moving after {max_time} s of simulated time \
-                 (is there no rolling resistance or sliding friction?)"
-            ),
-            SimError::Impact { balls, t, reason } => write!(
-                f,
-                "internal error: the impact of {} at t = {t} s failed: {reason}",
-                balls.join(" and ")
-            ),
-            SimError::NonFinite { ball, t } => write!(
-                f,
-                "internal error: a non-finite value appeared for ball {ball} at t = {t} s"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for SimError {}
-
-impl Setup {
-    /// Checks parameters and the starting positions: finite numbers, unique ids, every ball on
-    /// the cloth and clear of the cushions, no two balls overlapping (touching is allowed).
-    pub fn validate(&self) -> Result<(), SetupError> {
-        self.params.validate().map_err(|e| SetupError {
-            ball: None,
-            field: format!("params.{}", e.name),
-            reason: e.reason,
-        })?;
-        let p = &self.params;
-        let r = p.ball_radius;
-        let contact = p.cushion_contact_distance();
-        for (i, b) in self.balls.iter().enumerate() {
-            let bad = |field: &str, reason: String| SetupError {
-                ball: Some(i),
-                field: field.into(),
-                reason,
-            };
-            for (field, v) in [
-                ("pos", b.state.pos),
-                ("vel", b.state.vel),
-                ("spin", b.state.spin),
-            ] {
-                if !v.iter().all(|x| x.is_finite()) {
-                    return Err(bad(
-                        field,
-                        format!("ball \"{}\": values must be finite", b.id),
-                    ));
-                }
-            }
-            if self.balls[..i].iter().any(|o| o.id == b.id) {
-                return Err(bad("id", format!("ball id \"{}\" is used twice", b.id)));
-            }
-            if b.state.pos.z < r - detect::TOUCH_TOL {
-                return Err(bad("pos", format!("ball \"{}\" is below the cloth", b.id)));
-            }
-            if b.state.pos.z <= r + motion::ON_CLOTH && b.state.vel.z < 0.0 {
-                return Err(bad(
-                    "vel",
-                    format!("ball \"{}\" is on the cloth and moving down into it", b.id),
-                ));
-            }
-            if let Some(why) = self
-                .table
-                .placement_error(b.state.pos.xy().push(0.0), contact)
-            {
-                return Err(bad("pos", format!("ball \"{}\": {why}", b.id)));
-            }
-            for o in &self.balls[..i] {
-                let gap = (b.state.pos - o.state.pos).norm() - 2.0 * r;
-                if gap < -detect::TOUCH_TOL {
-                    return Err(bad(
-                        "pos",
-                        format!(
-                            "ball \"{}\" overlaps ball \"{}\" by {:.3} mm",
-                            b.id,
-                            o.id,
-                            -gap * 1e3
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
-}
+/// What resolving a candidate gives: the event's kind, the balls involved, their states
+/// before and after, the feature involved and the normal approach speed.
+type Resolved = (
+    EventKind,
+    Vec<usize>,
+    Vec<BallState>,
+    Vec<BallState>,
+    Option<String>,
+    Option<f64>,
+);
 
 struct Live {
     /// State at `t_ref`.
@@ -316,19 +128,13 @@ impl Sim<'_> {
             .min(self.opts.max_time)
     }
 
-    fn push(&mut self, t: f64, kind: Candidate, a: usize, b: usize, feature: usize) {
+    fn push(&mut self, t: f64, kind: Candidate, a: usize) {
         self.stats.candidates += 1;
-        let gen_b = if b == usize::MAX {
-            0
-        } else {
-            self.balls[b].generation
-        };
+        let gen_b = kind.other_ball().map_or(0, |b| self.balls[b].generation);
         self.queue.push(Entry {
             t,
             kind,
             a,
-            b,
-            feature,
             gen_a: self.balls[a].generation,
             gen_b,
         });
@@ -342,7 +148,7 @@ impl Sim<'_> {
         }
         let law_end = self.balls[i].law_end;
         if law_end.is_finite() {
-            self.push(law_end, Candidate::Transition, i, usize::MAX, 0);
+            self.push(law_end, Candidate::Transition, i);
         }
         if !st.motion.is_moving() {
             return;
@@ -355,21 +161,21 @@ impl Sim<'_> {
         let mut found = Vec::new();
         for (k, c) in table.cushions.iter().enumerate() {
             if let Some(t) = detect::cushion::nose_time(&path, c, contact, window) {
-                found.push((t, Candidate::Nose, k));
+                found.push((t, Candidate::Nose { cushion: k }));
             }
         }
         for (k, j) in table.jaws.iter().enumerate() {
             if let Some(t) = detect::cushion::jaw_time(&path, j, contact, window) {
-                found.push((t, Candidate::Jaw, k));
+                found.push((t, Candidate::Jaw { jaw: k }));
             }
         }
         for (k, pk) in table.pockets.iter().enumerate() {
             if let Some(t) = detect::pocket::capture_time(&path, pk, window) {
-                found.push((t, Candidate::Pocket, k));
+                found.push((t, Candidate::Pocket { pocket: k }));
             }
         }
-        for (t, kind, k) in found {
-            self.push(self.now + t, kind, i, usize::MAX, k);
+        for (t, kind) in found {
+            self.push(self.now + t, kind, i);
         }
     }
 
@@ -389,13 +195,15 @@ impl Sim<'_> {
         let window = end - self.now;
         let (a, b) = (self.current(i), self.current(j));
         if let Some(t) = detect::ball_ball::contact_time(&a, &b, window, self.params()) {
-            self.push(self.now + t, Candidate::BallBall, i, j, 0);
+            self.push(self.now + t, Candidate::BallBall { other: j }, i);
         }
     }
 
     fn is_stale(&self, e: &Entry) -> bool {
         self.balls[e.a].generation != e.gen_a
-            || (e.b != usize::MAX && self.balls[e.b].generation != e.gen_b)
+            || e.kind
+                .other_ball()
+                .is_some_and(|b| self.balls[b].generation != e.gen_b)
     }
 
     fn run(&mut self) -> Result<Ending, SimError> {
@@ -455,12 +263,38 @@ impl Sim<'_> {
         }
     }
 
+    /// The impact of ball `i` on a cushion nose, jaw or facing whose plan normal (from the
+    /// cushion towards the ball) is `normal`: (kind, balls, before, after, feature, normal speed).
+    fn cushion_impact(&self, i: usize, normal: Vec3, name: &str) -> Result<Resolved, SimError> {
+        let p = *self.params();
+        let s = self.current(i);
+        let vn = -s.vel.dot(&normal);
+        let pe = Params {
+            e_cushion: crate::impact::restitution_floor(p.e_cushion_at(vn), vn),
+            ..p
+        };
+        let s2 = self
+            .setup
+            .models
+            .cushion
+            .resolve(&s, normal, &pe)
+            .map_err(|err| self.impact_error(&[i], err))?;
+        Ok((
+            EventKind::BallCushion,
+            vec![i],
+            vec![s],
+            vec![motion::settle(s2, &p)],
+            Some(name.to_string()),
+            Some(vn),
+        ))
+    }
+
     fn resolve(&mut self, e: &Entry) -> Result<(), SimError> {
         let p = *self.params();
         let table = &self.setup.table;
         let (kind, involved, before, after, feature, normal_speed) = match e.kind {
-            Candidate::BallBall => {
-                let (a, b) = (self.current(e.a), self.current(e.b));
+            Candidate::BallBall { other } => {
+                let (a, b) = (self.current(e.a), self.current(other));
                 let n = (b.pos - a.pos).normalize();
                 let approach = (a.vel - b.vel).dot(&n);
                 let pe = Params {
@@ -472,50 +306,27 @@ impl Sim<'_> {
                     .models
                     .ball_ball
                     .resolve(&a, &b, &pe)
-                    .map_err(|err| self.impact_error(&[e.a, e.b], err))?;
+                    .map_err(|err| self.impact_error(&[e.a, other], err))?;
                 (
                     EventKind::BallBall,
-                    vec![e.a, e.b],
+                    vec![e.a, other],
                     vec![a, b],
                     vec![motion::settle(a2, &p), motion::settle(b2, &p)],
                     None,
                     Some(approach),
                 )
             }
-            Candidate::Nose | Candidate::Jaw => {
-                let s = self.current(e.a);
-                let (normal, name) = if e.kind == Candidate::Nose {
-                    let c = &table.cushions[e.feature];
-                    (c.normal, c.name.clone())
-                } else {
-                    let j = &table.jaws[e.feature];
-                    let d = s.pos - j.centre;
-                    (
-                        crate::ball::Vec3::new(d.x, d.y, 0.0).normalize(),
-                        j.name.clone(),
-                    )
-                };
-                let vn = -s.vel.dot(&normal);
-                let pe = Params {
-                    e_cushion: crate::impact::restitution_floor(p.e_cushion_at(vn), vn),
-                    ..p
-                };
-                let s2 = self
-                    .setup
-                    .models
-                    .cushion
-                    .resolve(&s, normal, &pe)
-                    .map_err(|err| self.impact_error(&[e.a], err))?;
-                (
-                    EventKind::BallCushion,
-                    vec![e.a],
-                    vec![s],
-                    vec![motion::settle(s2, &p)],
-                    Some(name),
-                    Some(vn),
-                )
+            Candidate::Nose { cushion } => {
+                let c = &table.cushions[cushion];
+                self.cushion_impact(e.a, c.normal, &c.name)?
             }
-            Candidate::Pocket => {
+            Candidate::Jaw { jaw } => {
+                let j = &table.jaws[jaw];
+                let d = self.current(e.a).pos - j.centre;
+                let normal = crate::ball::Vec3::new(d.x, d.y, 0.0).normalize();
+                self.cushion_impact(e.a, normal, &j.name)?
+            }
+            Candidate::Pocket { pocket } => {
                 let s = self.current(e.a);
                 let mut s2 = s;
                 s2.vel = crate::ball::Vec3::zeros();
@@ -526,7 +337,7 @@ impl Sim<'_> {
                     vec![e.a],
                     vec![s],
                     vec![s2],
-                    Some(table.pockets[e.feature].name.clone()),
+                    Some(table.pockets[pocket].name.clone()),
                     None,
                 )
             }

@@ -5,19 +5,54 @@
 use std::cmp::{Ordering, Reverse};
 use std::collections::BinaryHeap;
 
-/// Kinds of candidate, in the order they are taken when their times are equal.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+/// What a candidate event is, with the ball or table feature it involves besides its first
+/// ball. Candidates at the same time are taken in the order of the variants here.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Candidate {
-    /// Two balls touch.
-    BallBall,
-    /// A ball touches a straight nose or facing (index into `Table::cushions`).
-    Nose,
-    /// A ball touches a jaw (index into `Table::jaws`).
-    Jaw,
-    /// A ball enters a pocket's fall (index into `Table::pockets`).
-    Pocket,
-    /// A ball's motion law ends.
+    /// The first ball touches ball `other`.
+    BallBall {
+        /// The second ball.
+        other: usize,
+    },
+    /// The ball touches a straight nose or facing (index into `Table::cushions`).
+    Nose {
+        /// Index into `Table::cushions`.
+        cushion: usize,
+    },
+    /// The ball touches a jaw.
+    Jaw {
+        /// Index into `Table::jaws`.
+        jaw: usize,
+    },
+    /// The ball enters a pocket's fall.
+    Pocket {
+        /// Index into `Table::pockets`.
+        pocket: usize,
+    },
+    /// The ball's motion law ends.
     Transition,
+}
+
+impl Candidate {
+    /// The other ball, for a ball-ball candidate.
+    pub fn other_ball(self) -> Option<usize> {
+        match self {
+            Candidate::BallBall { other } => Some(other),
+            _ => None,
+        }
+    }
+
+    /// (rank of the kind, the other ball, the feature): the order among candidates of the same
+    /// time, after the kind and before the feature the first ball.
+    fn order(self) -> (u8, Option<usize>, usize) {
+        match self {
+            Candidate::BallBall { other } => (0, Some(other), 0),
+            Candidate::Nose { cushion } => (1, None, cushion),
+            Candidate::Jaw { jaw } => (2, None, jaw),
+            Candidate::Pocket { pocket } => (3, None, pocket),
+            Candidate::Transition => (4, None, 0),
+        }
+    }
 }
 
 /// A scheduled candidate event.
@@ -25,23 +60,21 @@ pub enum Candidate {
 pub struct Entry {
     /// Absolute time, s.
     pub t: f64,
-    /// Kind.
+    /// What it is.
     pub kind: Candidate,
-    /// First ball.
+    /// The (first) ball.
     pub a: usize,
-    /// Second ball for ball-ball, else `usize::MAX`.
-    pub b: usize,
-    /// Table feature index, or 0.
-    pub feature: usize,
     /// Generation of `a` when computed.
     pub gen_a: u64,
-    /// Generation of `b` when computed.
+    /// Generation of the other ball when computed (0 without one).
     pub gen_b: u64,
 }
 
 impl Entry {
-    fn key(&self) -> (Candidate, usize, usize, usize) {
-        (self.kind, self.a, self.b, self.feature)
+    /// Ties are broken by kind, first ball, second ball, feature.
+    fn key(&self) -> (u8, usize, Option<usize>, usize) {
+        let (rank, other, feature) = self.kind.order();
+        (rank, self.a, other, feature)
     }
 }
 

@@ -5,6 +5,7 @@
 
 use super::catalogue::{Effect, EffectParam};
 use super::data::{Measurement, Model};
+use super::error::DiscrepancyError;
 use super::residuals::{self, NuisanceValues};
 use rmpfit::{MPConfig, MPError, MPFitter, MPPar, MPResult, MPSide};
 use snooker_engine::Shot;
@@ -107,7 +108,7 @@ impl Problem<'_> {
     }
 
     /// Simulated shots and residuals at offsets `u`.
-    fn run(&self, u: &[f64]) -> Result<(Vec<Shot>, Vec<f64>), String> {
+    fn run(&self, u: &[f64]) -> Result<(Vec<Shot>, Vec<f64>), DiscrepancyError> {
         let x = self.theta(u);
         let model = self.model(&x);
         let sims = residuals::simulate_all(self.m, &model, &self.nuisances(&x), self.window)?;
@@ -199,7 +200,7 @@ pub fn fit(
     base: &Model,
     effects: &[(Effect, Vec<f64>)],
     start: &[NuisanceValues],
-) -> Result<FitResult, String> {
+) -> Result<FitResult, DiscrepancyError> {
     // (start, scale, low, high) per fitted number.
     let mut entries: Vec<(f64, f64, Option<f64>, Option<f64>)> = Vec::new();
     let mut layout = Vec::new();
@@ -209,12 +210,11 @@ pub fn fit(
     for (e, values) in effects {
         let params = e.params(&running);
         if params.len() != values.len() {
-            return Err(format!(
-                "{}: {} values for {} parameters",
-                e.id(),
-                values.len(),
-                params.len()
-            ));
+            return Err(DiscrepancyError::EffectValues {
+                effect: *e,
+                given: values.len(),
+                expected: params.len(),
+            });
         }
         for (p, v) in params.iter().zip(values) {
             entries.push((v.clamp(p.low, p.high), p.scale, Some(p.low), Some(p.high)));
@@ -277,9 +277,12 @@ pub fn fit(
             match problem.mpfit(&mut u) {
                 Ok(status) => errors = status.xerror,
                 Err(MPError::DoF) => {
-                    return Err(format!("{n} residuals cannot fit {k} unknowns"));
+                    return Err(DiscrepancyError::TooFewResiduals {
+                        residuals: n,
+                        unknowns: k,
+                    });
                 }
-                Err(e) => return Err(format!("the fit failed: {e}")),
+                Err(e) => return Err(DiscrepancyError::Solver(e.to_string())),
             }
         }
     }

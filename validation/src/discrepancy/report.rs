@@ -6,7 +6,7 @@ use super::catalogue::Effect;
 use super::data::Measurement;
 use super::fit::Fitted;
 use super::residuals::Gap;
-use super::workflow::{Candidate, Outcome, State};
+use super::workflow::{Candidate, Findings, State};
 use serde_json::{Map, Value, json};
 
 fn params_of(f: &Fitted) -> (Value, Value) {
@@ -66,7 +66,7 @@ pub fn catalogue() -> Value {
 }
 
 /// The report of `o` on `m` (formats.md's keys first).
-pub fn json(m: &Measurement, o: &Outcome) -> Value {
+pub fn json(m: &Measurement, o: &Findings) -> Value {
     let steps: Vec<Value> = o
         .steps
         .iter()
@@ -181,7 +181,7 @@ fn format_state(label: &str, s: &State, tracks: bool, observables: bool) -> Stri
 }
 
 /// A plain-text summary of `o`.
-pub fn text(m: &Measurement, o: &Outcome) -> String {
+pub fn text(m: &Measurement, o: &Findings) -> String {
     let observables = m.shots.iter().any(|s| !s.observables.is_empty());
     let tracks = m.shots.iter().any(|s| !s.samples.is_empty());
     let mut out = format_state("start", &o.baseline_state, tracks, observables);

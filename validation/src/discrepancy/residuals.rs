@@ -2,6 +2,7 @@
 //! shots to residuals: measured minus simulated, in units of the stated uncertainty.
 
 use super::data::{Measurement, Model, Moment, Nuisance, Observable, ShotData};
+use super::error::DiscrepancyError;
 use nalgebra::DMatrix;
 use snooker_engine::cue;
 use snooker_engine::{BallState, EventKind, Motion, Setup, Shot, SimOptions, Vec3, simulate};
@@ -70,7 +71,11 @@ fn early_velocity(shot: &ShotData, ball: usize) -> Option<[f64; 2]> {
 /// The setup `shot` starts from under `model` with its nuisances at `values`: the strike is
 /// replayed with the model's cue parameters, then fitted positions, velocities and spins are
 /// put in place.
-pub fn setup_for(shot: &ShotData, model: &Model, values: &[Vec<f64>]) -> Result<Setup, String> {
+pub fn setup_for(
+    shot: &ShotData,
+    model: &Model,
+    values: &[Vec<f64>],
+) -> Result<Setup, DiscrepancyError> {
     let mut setup = shot.setup.clone();
     setup.params = model.params;
     setup.models = model.models;
@@ -85,8 +90,12 @@ pub fn setup_for(shot: &ShotData, model: &Model, values: &[Vec<f64>]) -> Result<
                 _ => {}
             }
         }
-        let s = cue::strike(&st.before, &c, &model.params)
-            .map_err(|e| format!("shot {}: strike: {e}", shot.name))?;
+        let s = cue::strike(&st.before, &c, &model.params).map_err(|error| {
+            DiscrepancyError::Strike {
+                shot: shot.name.clone(),
+                error,
+            }
+        })?;
         setup.balls[st.ball].state = s.state;
     }
     for (n, v) in shot.nuisances.iter().zip(values) {
@@ -130,7 +139,7 @@ pub fn simulate_shot(
     model: &Model,
     values: &[Vec<f64>],
     window: f64,
-) -> Result<Shot, String> {
+) -> Result<Shot, DiscrepancyError> {
     let setup = setup_for(shot, model, values)?;
     let mut end = horizon(shot);
     if shot.observables.is_empty() {
@@ -140,7 +149,10 @@ pub fn simulate_shot(
         horizon: Some(end),
         ..SimOptions::default()
     };
-    simulate(&setup, &opts).map_err(|e| format!("shot {}: {e}", shot.name))
+    simulate(&setup, &opts).map_err(|error| DiscrepancyError::Simulation {
+        shot: shot.name.clone(),
+        error,
+    })
 }
 
 /// The ball's state at an observable's moment, if the simulated shot has that moment.
@@ -211,7 +223,7 @@ pub fn simulate_all(
     model: &Model,
     values: &[NuisanceValues],
     window: f64,
-) -> Result<Vec<Shot>, String> {
+) -> Result<Vec<Shot>, DiscrepancyError> {
     m.shots
         .iter()
         .zip(values)

@@ -6,6 +6,7 @@
 
 use super::catalogue::Effect;
 use super::data::{Model, Sample, ShotData};
+use super::error::DiscrepancyError;
 use super::residuals::setup_for;
 use rand::RngExt;
 use rand::SeedableRng;
@@ -84,24 +85,25 @@ impl Default for Camera {
 }
 
 /// Checks a camera's settings; the message names the setting.
-pub fn check_camera(c: &Camera) -> Result<(), String> {
+pub fn check_camera(c: &Camera) -> Result<(), DiscrepancyError> {
+    let bad = |setting, range, value| {
+        Err(DiscrepancyError::Camera {
+            setting,
+            range,
+            value,
+        })
+    };
     if !(c.fps.is_finite() && c.fps > 0.0 && c.fps <= 10_000.0) {
-        return Err(format!("fps must be between 0 and 10000, got {}", c.fps));
+        return bad("fps", "between 0 and 10000", c.fps);
     }
     if !(c.noise.is_finite() && c.noise >= 0.0 && c.noise < 0.1) {
-        return Err(format!(
-            "noise must be between 0 and 0.1 m, got {}",
-            c.noise
-        ));
+        return bad("noise", "between 0 and 0.1 m", c.noise);
     }
     if !(0.0..0.9).contains(&c.drop_rate) {
-        return Err(format!(
-            "drop rate must be between 0 and 0.9, got {}",
-            c.drop_rate
-        ));
+        return bad("drop rate", "between 0 and 0.9", c.drop_rate);
     }
     if !(c.max_duration.is_finite() && c.max_duration > 0.0) {
-        return Err(format!("duration must be positive, got {}", c.max_duration));
+        return bad("duration", "positive", c.max_duration);
     }
     Ok(())
 }
@@ -112,7 +114,7 @@ pub fn film(
     truth: &Model,
     uncatalogued: &[Uncatalogued],
     camera: &Camera,
-) -> Result<(Shot, Vec<Sample>), String> {
+) -> Result<(Shot, Vec<Sample>), DiscrepancyError> {
     check_camera(camera)?;
     let values = super::residuals::scene_values(shot);
     let setup = setup_for(shot, truth, &values)?;
@@ -120,10 +122,17 @@ pub fn film(
         horizon: Some(camera.max_duration),
         ..SimOptions::default()
     };
-    let sim = simulate(&setup, &opts).map_err(|e| format!("shot {}: {e}", shot.name))?;
+    let sim = simulate(&setup, &opts).map_err(|error| DiscrepancyError::Simulation {
+        shot: shot.name.clone(),
+        error,
+    })?;
     let end = (sim.duration + 0.5).min(camera.max_duration);
     let mut rng = ChaCha8Rng::seed_from_u64(camera.seed);
-    let normal = Normal::new(0.0, camera.noise).map_err(|e| e.to_string())?;
+    let normal = Normal::new(0.0, camera.noise).map_err(|_| DiscrepancyError::Camera {
+        setting: "noise",
+        range: "between 0 and 0.1 m",
+        value: camera.noise,
+    })?;
     let offsets = wobble_offsets(&sim, uncatalogued, end);
     let mut samples = Vec::new();
     let frames = (end * camera.fps).floor() as usize;

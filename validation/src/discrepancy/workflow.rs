@@ -14,6 +14,7 @@
 
 use super::catalogue::Effect;
 use super::data::Measurement;
+use super::error::DiscrepancyError;
 use super::fit::{FitResult, Fitted, fit};
 use super::locate::{Location, locate};
 use super::residuals::{Gap, position_gap, starting_values};
@@ -62,9 +63,58 @@ pub struct Candidate {
     pub delta_bic: f64,
     /// Share of the current excess chi2 it explains.
     pub share: f64,
-    /// "named", "not significant", "explains too little", "indistinguishable", "not
-    /// applicable: ..." or "failed: ...".
-    pub verdict: String,
+    /// What the workflow made of it.
+    pub verdict: Verdict,
+}
+
+/// What the workflow made of a candidate effect in one step.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    /// It passed every test but another candidate was better (reported as "").
+    Qualified,
+    /// It was named.
+    Named,
+    /// Its drop in BIC is below the threshold.
+    NotSignificant,
+    /// It lowers the BIC enough but explains too small a share of the excess chi2.
+    ExplainsTooLittle,
+    /// It explains the data as well as the best one: the data cannot tell them apart.
+    Indistinguishable,
+    /// It has no admissible value in this model.
+    NotApplicable,
+    /// Its fit failed.
+    Failed(DiscrepancyError),
+}
+
+impl Verdict {
+    /// The verdict of a candidate that could not be fitted.
+    fn of_error(e: DiscrepancyError) -> Verdict {
+        match e {
+            DiscrepancyError::NotApplicable => Verdict::NotApplicable,
+            e => Verdict::Failed(e),
+        }
+    }
+}
+
+impl std::fmt::Display for Verdict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Verdict::Qualified => Ok(()),
+            Verdict::Named => f.write_str("named"),
+            Verdict::NotSignificant => f.write_str("not significant"),
+            Verdict::ExplainsTooLittle => f.write_str("explains too little"),
+            Verdict::Indistinguishable => f.write_str("indistinguishable"),
+            Verdict::NotApplicable => write!(f, "{}", DiscrepancyError::NotApplicable),
+            Verdict::Failed(e) => write!(f, "failed: {e}"),
+        }
+    }
+}
+
+/// Reports give the verdict as its text.
+impl Serialize for Verdict {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
 }
 
 /// One named effect.
@@ -108,9 +158,9 @@ pub struct State {
     pub location: Location,
 }
 
-/// The outcome of the workflow.
+/// What the workflow found.
 #[derive(Clone, Debug)]
-pub struct Outcome {
+pub struct Findings {
     /// The starting model with only the initial quantities fitted.
     pub baseline: FitResult,
     /// Its summary.
@@ -131,7 +181,7 @@ pub struct Outcome {
     pub ambiguous: Vec<Effect>,
 }
 
-impl Outcome {
+impl Findings {
     /// The effects named, in order.
     pub fn named(&self) -> Vec<Effect> {
         self.steps.iter().map(|s| s.effect).collect()
@@ -191,12 +241,12 @@ fn try_effect(
     named: &[(Effect, Vec<f64>)],
     current: &FitResult,
     effect: Effect,
-) -> Result<FitResult, String> {
+) -> Result<FitResult, DiscrepancyError> {
     if effect.params(&current.model).is_empty() {
-        return Err("not applicable: no admissible value in this model".into());
+        return Err(DiscrepancyError::NotApplicable);
     }
     let mut best: Option<FitResult> = None;
-    let mut last_err = String::new();
+    let mut last_err = DiscrepancyError::Solver("no starting point".into());
     // The initial quantities from the current fit, and afresh from the data: the current ones
     // may have bent to make up for the very effect being tried.
     let fresh: Vec<_> = m.shots.iter().map(starting_values).collect();
@@ -215,8 +265,8 @@ fn try_effect(
 }
 
 /// Runs the workflow on `m` from its model.
-pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
-    m.validate().map_err(|e| e.to_string())?;
+pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError> {
+    m.validate()?;
     let start: Vec<_> = m.shots.iter().map(starting_values).collect();
     let baseline = fit(m, &m.model, &[], &start)?;
     let baseline_state = state(m, &baseline);
@@ -236,7 +286,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
         if tried.is_empty() {
             break;
         }
-        let fits: Vec<(Effect, Result<FitResult, String>)> = tried
+        let fits: Vec<(Effect, Result<FitResult, DiscrepancyError>)> = tried
             .par_iter()
             .map(|&e| (e, try_effect(m, &named, &current, e)))
             .collect();
@@ -259,7 +309,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
                             fitted,
                             delta_bic,
                             share,
-                            verdict: String::new(),
+                            verdict: Verdict::Qualified,
                         },
                         Some(r),
                     )
@@ -270,11 +320,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
                         fitted: None,
                         delta_bic: f64::INFINITY,
                         share: 0.0,
-                        verdict: if e.starts_with("not applicable") {
-                            e
-                        } else {
-                            format!("failed: {e}")
-                        },
+                        verdict: Verdict::of_error(e),
                     },
                     None,
                 ),
@@ -285,19 +331,25 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
                 .total_cmp(&b.0.delta_bic)
                 .then(a.0.effect.cmp(&b.0.effect))
         });
-        for (c, _) in cands.iter_mut().filter(|(c, _)| c.verdict.is_empty()) {
+        for (c, _) in cands
+            .iter_mut()
+            .filter(|(c, _)| c.verdict == Verdict::Qualified)
+        {
             c.verdict = if c.delta_bic > -opts.threshold {
-                "not significant".into()
+                Verdict::NotSignificant
             } else if c.share < opts.min_share {
-                "explains too little".into()
+                Verdict::ExplainsTooLittle
             } else {
-                String::new()
+                Verdict::Qualified
             };
         }
         // The best-scoring effect is the only one that may be named.
-        if cands.first().is_none_or(|(c, _)| !c.verdict.is_empty()) {
+        if cands
+            .first()
+            .is_none_or(|(c, _)| c.verdict != Verdict::Qualified)
+        {
             if let Some((c, _)) = cands.first()
-                && c.verdict == "explains too little"
+                && c.verdict == Verdict::ExplainsTooLittle
             {
                 stop_reason = Some(format!(
                     "the best candidate, {}, would lower the BIC by {:.0} but explains only \
@@ -325,7 +377,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
                 .collect();
             for (c, _) in cands.iter_mut() {
                 if ambiguous.contains(&c.effect) {
-                    c.verdict = "indistinguishable".into();
+                    c.verdict = Verdict::Indistinguishable;
                 }
             }
             stop_reason = Some(format!(
@@ -341,9 +393,10 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
             last_candidates = cands.into_iter().map(|(c, _)| c).collect();
             break;
         }
-        cands[i].0.verdict = "named".into();
-        let (cand, r) = cands.swap_remove(i);
-        let r = r.expect("a named candidate has a fit");
+        cands[i].0.verdict = Verdict::Named;
+        let (cand, Some(r)) = cands.swap_remove(i) else {
+            unreachable!("a qualified candidate has a fit");
+        };
         let mut candidates: Vec<Candidate> = vec![cand.clone()];
         candidates.extend(cands.into_iter().map(|(c, _)| c));
         candidates.sort_by(|a, b| a.delta_bic.total_cmp(&b.delta_bic));
@@ -378,7 +431,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Outcome, String> {
             None => format!("no catalogue effect explains it; largest residual: {place}"),
         }
     });
-    Ok(Outcome {
+    Ok(Findings {
         baseline,
         baseline_state,
         steps,

@@ -1,14 +1,14 @@
 //! Whole-shot simulation time: the break-off (22 balls) and a two-ball shot.
-//! Run with `cargo bench --bench shots`; medians are quoted in the README.
+//! Run with `cargo bench -p snooker-scene --bench shots`; medians are quoted in the README.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use snooker::scene;
+use snooker_scene as scene;
 use std::hint::black_box;
 use std::path::Path;
 
 fn load(name: &str) -> scene::Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
+        .join("../scenes")
         .join(name);
     scene::load(&path).expect("scene")
 }

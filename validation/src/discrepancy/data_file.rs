@@ -5,12 +5,12 @@
 //!
 //! Also writes the files `snooker synth` makes.
 
-use crate::scene::{self, Scene, SceneError};
+use super::data::{Moment, Quantity, StrikeSpec};
+use super::{Measurement, Model, Nuisance, Observable, Sample, ShotData};
 use serde::Deserialize;
 use snooker_engine::motion::Transition;
 use snooker_engine::{EventKind, Models, Params};
-use snooker_validation::discrepancy::data::{Moment, Quantity, StrikeSpec};
-use snooker_validation::discrepancy::{Measurement, Model, Nuisance, Observable, Sample, ShotData};
+use snooker_scene::{self as scene, Scene, SceneError};
 use std::path::{Path, PathBuf};
 
 /// One shot of a data file.
@@ -347,13 +347,10 @@ fn nuisance(s: &str, ids: &[String], has_strike: bool) -> Result<Nuisance, Strin
 
 /// A shot from a loaded scene: the setup with the strike applied, and the strike to replay.
 pub fn shot_from_scene(scene: &Scene) -> ShotData {
-    let strike = scene.strike.as_ref().and_then(|(id, cue, _)| {
-        let ball = scene.setup.balls.iter().position(|b| &b.id == id)?;
-        Some(StrikeSpec {
-            ball,
-            before: scene.before_strike?,
-            cue: *cue,
-        })
+    let strike = scene.strike.as_ref().map(|s| StrikeSpec {
+        ball: s.index,
+        before: s.before,
+        cue: s.cue,
     });
     ShotData {
         name: scene.name.clone(),

@@ -3,12 +3,11 @@
 //! ball ends at rest or pocketed, and the same setup gives the same shot.
 
 use proptest::prelude::*;
+use snooker_engine::audit;
 use snooker_engine::cue::{self, Cue};
 use snooker_engine::detect::{SKIN, VERIFY_TOL};
-use snooker_engine::impact::MIN_SEPARATION;
 use snooker_engine::{
-    Ball, BallKind, BallState, EventKind, Models, Motion, Params, Setup, Shot, SimOptions, Table,
-    simulate,
+    Ball, BallKind, BallState, Models, Motion, Params, Setup, Shot, SimOptions, Table, simulate,
 };
 
 /// Grid cells (columns x rows) over the playing area in which balls are placed, one per cell at
@@ -79,103 +78,19 @@ fn setup(cells: &[(usize, f64, f64)]) -> Setup {
     }
 }
 
-/// Total energy of the balls whose states are `states`.
-fn energy(states: &[BallState], p: &Params) -> f64 {
-    states
-        .iter()
-        .map(|s| s.energy(p.ball_mass, p.inertia(), p.ball_radius, p.g))
-        .sum()
-}
-
-/// The largest energy an event may add: an impact slower than MIN_SEPARATION leaves at
-/// MIN_SEPARATION (engine/src/impact/mod.rs), gaining at most 1/2 m_eff MIN_SEPARATION^2, with
-/// m_eff = M/2 for two equal balls and M against a cushion (fixed). Other events add nothing.
-fn allowance(kind: EventKind, p: &Params) -> f64 {
-    let m_eff = match kind {
-        EventKind::BallBall => p.ball_mass / 2.0,
-        EventKind::BallCushion => p.ball_mass,
-        _ => 0.0,
-    };
-    0.5 * m_eff * MIN_SEPARATION * MIN_SEPARATION
-}
-
-/// Every ball's state just after event `k` (events at the same instant included up to `k`).
-fn after_event(shot: &Shot, k: usize) -> Vec<BallState> {
-    let e = &shot.events[k];
-    let mut states: Vec<BallState> = shot
-        .tracks
-        .iter()
-        .map(|t| t.state_at(e.t, &shot.params))
-        .collect();
-    // Later events at the same instant are already in `state_at`: undo them, latest first.
-    for later in shot.events[k + 1..]
-        .iter()
-        .take_while(|l| l.t == e.t)
-        .collect::<Vec<_>>()
-        .into_iter()
-        .rev()
-    {
-        for (&b, s) in later.balls.iter().zip(&later.before) {
-            states[b] = *s;
-        }
-    }
-    states
-}
-
-fn check_energy(shot: &Shot) -> Result<(), TestCaseError> {
-    let p = &shot.params;
-    // Rounding allowance on sums of a few joules: relative 1e-12.
-    let round = |e: f64| 1e-12 * e.abs().max(1e-3);
-    let mut last = energy(
-        &shot
-            .tracks
+/// The invariants at every event ([`snooker_engine::audit::events`]), with contacts found one
+/// skin inside 2R and verified to VERIFY_TOL: no overlap deeper than their sum.
+fn check_events(shot: &Shot) -> Result<(), TestCaseError> {
+    let broken = audit::events(shot, SKIN + VERIFY_TOL);
+    prop_assert!(
+        broken.is_empty(),
+        "{}",
+        broken
             .iter()
-            .map(|t| t.segments[0].state)
-            .collect::<Vec<_>>(),
-        p,
+            .map(|v| v.to_string())
+            .collect::<Vec<_>>()
+            .join("; ")
     );
-    for (k, e) in shot.events.iter().enumerate() {
-        let after = after_event(shot, k);
-        let mut before = after.clone();
-        for (&b, s) in e.balls.iter().zip(&e.before) {
-            before[b] = *s;
-        }
-        let (eb, ea) = (energy(&before, p), energy(&after, p));
-        // Between events only friction acts.
-        prop_assert!(
-            eb <= last + round(last),
-            "energy rose between events to {k}: {last} -> {eb}"
-        );
-        prop_assert!(
-            ea <= eb + allowance(e.kind, p) + round(eb),
-            "event {k} ({:?}) raised the energy by {} J",
-            e.kind,
-            ea - eb
-        );
-        last = ea;
-    }
-    Ok(())
-}
-
-fn check_no_overlap(shot: &Shot) -> Result<(), TestCaseError> {
-    let r = shot.params.ball_radius;
-    for (k, e) in shot.events.iter().enumerate() {
-        let states = after_event(shot, k);
-        for (i, a) in states.iter().enumerate() {
-            for (j, b) in states.iter().enumerate().skip(i + 1) {
-                if a.motion == Motion::Pocketed || b.motion == Motion::Pocketed {
-                    continue;
-                }
-                let overlap = 2.0 * r - (a.pos - b.pos).norm();
-                // Contacts are found one skin inside 2R and verified to VERIFY_TOL.
-                prop_assert!(
-                    overlap <= SKIN + VERIFY_TOL,
-                    "balls {i} and {j} overlap by {overlap:e} m after event {k} at t = {}",
-                    e.t
-                );
-            }
-        }
-    }
     Ok(())
 }
 
@@ -191,8 +106,7 @@ proptest! {
         };
         setup.balls[0].state = s.state;
         let shot = simulate(&setup, &SimOptions::default()).expect("simulation failed");
-        check_energy(&shot)?;
-        check_no_overlap(&shot)?;
+        check_events(&shot)?;
         for (t, s) in shot.tracks.iter().zip(shot.final_states()) {
             prop_assert!(
                 matches!(s.motion, Motion::Stationary | Motion::Pocketed),

@@ -1,7 +1,6 @@
 //! `snooker validate`: the cross-check against rapier over the validation scene set (or given
 //! scenes), with a progress bar, a report table, and optional JSON and Markdown output.
 
-use crate::scene;
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_validation::convergence;
 use snooker_validation::crosscheck::{self, Outcome, SceneSpec};
@@ -13,18 +12,25 @@ use std::path::{Path, PathBuf};
 /// Time steps of the convergence study, s (halving).
 pub const STUDY_STEPS: [f64; 5] = [4e-4, 2e-4, 1e-4, 5e-5, 2.5e-5];
 
-/// What `snooker validate` was asked to do.
+/// Arguments of `snooker validate`: the cross-check against rapier on the validation scenes
+/// (or the given ones).
+#[derive(clap::Args)]
 pub struct Request {
-    /// Scene files; the built-in set when empty.
+    /// A scene file to check (repeatable); the built-in validation set when none is given.
+    #[arg(long = "scene", value_name = "S")]
     pub scenes: Vec<PathBuf>,
-    /// rapier's time step, s.
-    pub dt: f64,
-    /// Also run the time-step study.
-    pub convergence: bool,
-    /// Write the report as JSON here.
+    /// Write the report as JSON to this file.
+    #[arg(long, value_name = "OUT")]
     pub json: Option<PathBuf>,
-    /// Write the report as Markdown here.
+    /// Write the report as Markdown to this file (docs/validation.md).
+    #[arg(long, value_name = "OUT")]
     pub markdown: Option<PathBuf>,
+    /// rapier's time step, s.
+    #[arg(long, default_value_t = crosscheck::DEFAULT_DT)]
+    pub dt: f64,
+    /// Also run the time-step study (several minutes).
+    #[arg(long)]
+    pub convergence: bool,
 }
 
 /// Why `snooker validate` stopped before comparing.
@@ -33,13 +39,13 @@ pub struct BadInput(pub String);
 
 /// Loads the requested scenes (or the built-in set).
 pub fn load_scenes(paths: &[PathBuf]) -> Result<Vec<SceneSpec>, BadInput> {
-    let parsed: Result<Vec<scene::Scene>, scene::SceneError> = if paths.is_empty() {
+    let parsed: Result<Vec<snooker_scene::Scene>, snooker_scene::SceneError> = if paths.is_empty() {
         BUILTIN
             .iter()
-            .map(|(file, text)| scene::parse(text, &format!("validation/scenes/{file}")))
+            .map(|(file, text)| snooker_scene::parse(text, &format!("validation/scenes/{file}")))
             .collect()
     } else {
-        paths.iter().map(|p| scene::load(p)).collect()
+        paths.iter().map(|p| snooker_scene::load(p)).collect()
     };
     let scenes = parsed.map_err(|e| BadInput(e.to_string()))?;
     Ok(scenes
@@ -134,6 +140,15 @@ pub fn output(req: &Request, report: &Report) -> Result<(), BadInput> {
         println!("Markdown written to {}", p.display());
     }
     Ok(())
+}
+
+/// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input.
+pub fn run_command(req: Request) -> std::process::ExitCode {
+    match execute(&req) {
+        Ok(true) => std::process::ExitCode::SUCCESS,
+        Ok(false) => std::process::ExitCode::from(super::FAILED),
+        Err(e) => super::bad_input(e.0),
+    }
 }
 
 /// Checks the request, runs the cross-check and writes the outputs: `Ok(true)` when every

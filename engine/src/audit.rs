@@ -1,0 +1,324 @@
+//! Invariants of a simulated shot, checked from outside the event loop: events in time order,
+//! every state finite, no two balls in play overlapping by more than [`MAX_OVERLAP`] at any
+//! event or any sampled instant, energy never rising between events and rising at an event by
+//! no more than that event kind's allowance ([`energy_allowance`]), every ball in play on the
+//! table, and every ball at rest or out of play at the end. The tests, the fuzz harness and
+//! anyone embedding the engine can run them on any shot: [`events`] at the events alone
+//! (cheap), [`audit`] also on a fine grid of instants.
+
+use crate::ball::{BallState, Motion};
+use crate::impact::MIN_SEPARATION;
+use crate::params::Params;
+use crate::sim::{Ending, EventKind, Setup, Shot};
+
+/// Largest overlap of two balls in play the engine promises at any instant, m (1 µm).
+pub const MAX_OVERLAP: f64 = 1e-6;
+/// Sampling interval of [`audit`]'s sweep, s.
+pub const SAMPLE_INTERVAL: f64 = 5e-4;
+
+/// What a sweep of a shot found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Sweep {
+    /// Largest overlap of two balls in play, m.
+    pub max_overlap: f64,
+    /// Where it happened: time and the two ids.
+    pub worst: Option<(f64, String, String)>,
+    /// First time a ball in play was off the table, with its id.
+    pub escaped: Option<(f64, String)>,
+    /// First time a state was not finite, with the ball's id.
+    pub non_finite: Option<(f64, String)>,
+    /// Samples taken.
+    pub samples: usize,
+}
+
+/// Samples every ball of `shot` every `dt` seconds and just before and after every event,
+/// measuring pairwise overlap and checking that balls in play stay on the table.
+pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
+    let p = &shot.params;
+    let r = p.ball_radius;
+    let contact = p.cushion_contact_distance();
+    let mut times: Vec<f64> = Vec::new();
+    let n = (shot.duration / dt).ceil() as usize;
+    times.extend((0..=n).map(|k| (k as f64 * dt).min(shot.duration)));
+    for e in &shot.events {
+        for d in [-1e-7, -1e-9, 0.0, 1e-9, 1e-7] {
+            let t = e.t + d;
+            if t >= 0.0 && t <= shot.duration {
+                times.push(t);
+            }
+        }
+    }
+    let mut out = Sweep::default();
+    for &t in &times {
+        let states: Vec<_> = shot.tracks.iter().map(|tr| tr.state_at(t, p)).collect();
+        out.samples += 1;
+        for (i, a) in states.iter().enumerate() {
+            if !a.motion.in_play() {
+                continue;
+            }
+            if out.non_finite.is_none() && !a.is_finite() {
+                out.non_finite = Some((t, shot.tracks[i].id.clone()));
+            }
+            if out.escaped.is_none() && !setup.table.holds(a.pos, contact, 1e-6) {
+                out.escaped = Some((t, shot.tracks[i].id.clone()));
+            }
+            for (j, b) in states.iter().enumerate().skip(i + 1) {
+                if !b.motion.in_play() {
+                    continue;
+                }
+                let overlap = 2.0 * r - (a.pos - b.pos).norm();
+                if overlap > out.max_overlap {
+                    out.max_overlap = overlap;
+                    out.worst = Some((t, shot.tracks[i].id.clone(), shot.tracks[j].id.clone()));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Mechanical energy of the balls `states`, J: kinetic (translation and rotation), potential
+/// above the cloth, and potential along a tilted bed (which the balls' rolling downhill turns
+/// into kinetic energy). Pocketed balls count nothing.
+pub fn energy(states: &[BallState], p: &Params) -> f64 {
+    let bed = |s: &BallState| p.ball_mass * p.g * (p.slope_x * s.pos.x + p.slope_y * s.pos.y);
+    states
+        .iter()
+        .filter(|s| s.motion.in_play())
+        .map(|s| s.energy(p.ball_mass, p.inertia(), p.ball_radius, p.g) - bed(s))
+        .sum()
+}
+
+/// The most energy an event of kind `kind` may add, J. An impact slower than
+/// [`MIN_SEPARATION`] leaves at that speed (the micro-collisions of a sustained contact,
+/// [`crate::impact`]), which adds at most 1/2 m_eff MIN_SEPARATION^2: m_eff = M/2 for two equal
+/// balls, M for a ball against a cushion. No other event adds energy.
+pub fn energy_allowance(kind: EventKind, p: &Params) -> f64 {
+    let m_eff = match kind {
+        EventKind::BallBall => p.ball_mass / 2.0,
+        EventKind::BallCushion => p.ball_mass,
+        _ => 0.0,
+    };
+    0.5 * m_eff * MIN_SEPARATION * MIN_SEPARATION
+}
+
+/// Every ball's state just after event `k` (events at the same instant counted up to `k`).
+pub fn states_after(shot: &Shot, k: usize) -> Vec<BallState> {
+    let e = &shot.events[k];
+    let mut states: Vec<BallState> = shot
+        .tracks
+        .iter()
+        .map(|t| t.state_at(e.t, &shot.params))
+        .collect();
+    // Later events at the same instant are already in `state_at`: undo them, latest first.
+    for later in shot.events[k + 1..]
+        .iter()
+        .take_while(|l| l.t == e.t)
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+    {
+        for (&b, s) in later.balls.iter().zip(&later.before) {
+            states[b] = *s;
+        }
+    }
+    states
+}
+
+/// One broken invariant.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Violation {
+    /// An event added more energy than its kind allows.
+    EnergyGain {
+        /// The event's index.
+        event: usize,
+        /// Its kind.
+        kind: EventKind,
+        /// Energy added, J.
+        gain: f64,
+        /// Its allowance, J.
+        allowance: f64,
+    },
+    /// The energy rose between two events.
+    EnergyRose {
+        /// The index of the event it rose before.
+        event: usize,
+        /// By how much, J.
+        rise: f64,
+    },
+    /// Two events out of time order.
+    EventsOutOfOrder {
+        /// The earlier event's time, s.
+        first: f64,
+        /// The later event's time, s.
+        then: f64,
+    },
+    /// A state that is not finite.
+    NonFinite {
+        /// When, s.
+        t: f64,
+        /// Which ball.
+        ball: String,
+    },
+    /// Two balls overlapping by more than [`MAX_OVERLAP`].
+    Overlap {
+        /// By how much, m.
+        depth: f64,
+        /// When, s.
+        t: f64,
+        /// The two balls.
+        balls: (String, String),
+    },
+    /// A ball in play off the table.
+    OffTable {
+        /// When, s.
+        t: f64,
+        /// Which ball.
+        ball: String,
+    },
+    /// A shot that ended at rest with a ball still moving.
+    StillMoving {
+        /// Which ball.
+        ball: String,
+        /// Its motion.
+        motion: Motion,
+    },
+}
+
+impl std::fmt::Display for Violation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Violation::EventsOutOfOrder { first, then } => {
+                write!(f, "events out of order: {first} then {then}")
+            }
+            Violation::NonFinite { t, ball } => write!(f, "non-finite state of {ball} at t = {t}"),
+            Violation::Overlap { depth, t, balls } => write!(
+                f,
+                "balls {} and {} overlap by {depth:.3e} m at t = {t}",
+                balls.0, balls.1
+            ),
+            Violation::OffTable { t, ball } => write!(f, "ball {ball} left the table at t = {t}"),
+            Violation::StillMoving { ball, motion } => {
+                write!(f, "ball {ball} did not stop ({})", motion.name())
+            }
+            Violation::EnergyGain {
+                event,
+                kind,
+                gain,
+                allowance,
+            } => write!(
+                f,
+                "event {event} ({}) added {gain:.3e} J (allowance {allowance:.3e} J)",
+                kind.name()
+            ),
+            Violation::EnergyRose { event, rise } => {
+                write!(f, "the energy rose by {rise:.3e} J before event {event}")
+            }
+        }
+    }
+}
+
+/// Every invariant `shot` breaks at its events: their order, finite states, overlaps deeper
+/// than `max_overlap` between any two balls in play just after each event, the energy at and
+/// between events, and, for a shot that ended at rest, every ball stopped.
+pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
+    let p = &shot.params;
+    let r = p.ball_radius;
+    let mut out = Vec::new();
+    for w in shot.events.windows(2) {
+        if !(w[0].t <= w[1].t) {
+            out.push(Violation::EventsOutOfOrder {
+                first: w[0].t,
+                then: w[1].t,
+            });
+        }
+    }
+    // Rounding allowance on sums of a few joules.
+    let round = |e: f64| 1e-12 * e.abs().max(1e-3);
+    let starts: Vec<BallState> = shot.tracks.iter().map(|t| t.segments[0].state).collect();
+    let mut last = energy(&starts, p);
+    for (k, e) in shot.events.iter().enumerate() {
+        let after = states_after(shot, k);
+        for (tr, s) in shot.tracks.iter().zip(&after) {
+            if !s.is_finite() {
+                out.push(Violation::NonFinite {
+                    t: e.t,
+                    ball: tr.id.clone(),
+                });
+            }
+        }
+        let mut before = after.clone();
+        for (&b, s) in e.balls.iter().zip(&e.before) {
+            before[b] = *s;
+        }
+        let (eb, ea) = (energy(&before, p), energy(&after, p));
+        if eb > last + round(last) {
+            out.push(Violation::EnergyRose {
+                event: k,
+                rise: eb - last,
+            });
+        }
+        let allowance = energy_allowance(e.kind, p);
+        if ea > eb + allowance + round(eb) {
+            out.push(Violation::EnergyGain {
+                event: k,
+                kind: e.kind,
+                gain: ea - eb,
+                allowance,
+            });
+        }
+        last = ea;
+        for (i, a) in after.iter().enumerate() {
+            for (j, b) in after.iter().enumerate().skip(i + 1) {
+                if !a.motion.in_play() || !b.motion.in_play() {
+                    continue;
+                }
+                let depth = 2.0 * r - (a.pos - b.pos).norm();
+                if depth > max_overlap {
+                    out.push(Violation::Overlap {
+                        depth,
+                        t: e.t,
+                        balls: (shot.tracks[i].id.clone(), shot.tracks[j].id.clone()),
+                    });
+                }
+            }
+        }
+    }
+    if shot.ending == Ending::AtRest {
+        for (tr, s) in shot.tracks.iter().zip(shot.final_states()) {
+            // A ball spinning in place with no sidespin decay spins for ever: the shot is over.
+            let spins_for_ever = s.motion == Motion::Spinning && p.sidespin_decel == 0.0;
+            if s.motion.is_moving() || (s.motion == Motion::Spinning && !spins_for_ever) {
+                out.push(Violation::StillMoving {
+                    ball: tr.id.clone(),
+                    motion: s.motion,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Every invariant `shot` (simulated from `setup`) breaks: [`events`], and on a grid of
+/// instants [`SAMPLE_INTERVAL`] apart and just around every event, overlaps deeper than
+/// [`MAX_OVERLAP`], balls off the table and non-finite states.
+pub fn audit(setup: &Setup, shot: &Shot) -> Vec<Violation> {
+    let mut out = events(shot, MAX_OVERLAP);
+    let sweep = sweep(setup, shot, SAMPLE_INTERVAL);
+    if let Some((t, ball)) = sweep.non_finite {
+        out.push(Violation::NonFinite { t, ball });
+    }
+    if sweep.max_overlap > MAX_OVERLAP
+        && let Some((t, a, b)) = sweep.worst
+    {
+        out.push(Violation::Overlap {
+            depth: sweep.max_overlap,
+            t,
+            balls: (a, b),
+        });
+    }
+    if let Some((t, ball)) = sweep.escaped {
+        out.push(Violation::OffTable { t, ball });
+    }
+    out
+}

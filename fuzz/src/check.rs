@@ -1,0 +1,185 @@
+//! One scene through the parser and the engine, every invariant checked: how it ended, and
+//! what (if anything) is wrong with it.
+
+use crate::generate::{Generated, Kind, physical_cloth};
+use snooker_engine::audit::{self, MAX_OVERLAP};
+use snooker_engine::{Shot, SimError, simulate};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+/// How a scene ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Ending {
+    /// Simulated; every ball at rest, pocketed or off the table.
+    AtRest,
+    /// Rejected by the parser with a message (exit 2).
+    Rejected,
+    /// Balls still moving after `max_time` (exit 1): physical on a near-frictionless cloth.
+    DidNotStop,
+    /// The event cap (exit 1): physical only on a near-frictionless cloth.
+    EventCap,
+    /// Too many events at one instant (exit 1).
+    Stuck,
+    /// An impact model failed (exit 1, "internal error").
+    ImpactFailed,
+    /// A non-finite number appeared (exit 1, "internal error").
+    NonFinite,
+    /// A panic.
+    Panicked,
+}
+
+impl Ending {
+    /// Its name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Ending::AtRest => "at rest",
+            Ending::Rejected => "rejected",
+            Ending::DidNotStop => "still moving at max_time",
+            Ending::EventCap => "event cap",
+            Ending::Stuck => "stuck at an instant",
+            Ending::ImpactFailed => "impact failed",
+            Ending::NonFinite => "non-finite",
+            Ending::Panicked => "panic",
+        }
+    }
+}
+
+/// What one scene did.
+#[derive(Clone, Debug)]
+pub struct Verdict {
+    /// How it ended.
+    pub ending: Ending,
+    /// Whether its parameters are a physical cloth's.
+    pub physical: bool,
+    /// Why it fails the harness, if it does.
+    pub failure: Option<String>,
+    /// Events simulated (first run).
+    pub events: usize,
+}
+
+fn sim_ending(e: &SimError) -> Ending {
+    match e {
+        SimError::Setup(_) => Ending::Rejected,
+        SimError::TooManyEvents { .. } => Ending::EventCap,
+        SimError::Stuck { .. } => Ending::Stuck,
+        SimError::DidNotStop { .. } => Ending::DidNotStop,
+        SimError::Impact { .. } => Ending::ImpactFailed,
+        SimError::NonFinite { .. } => Ending::NonFinite,
+    }
+}
+
+/// True when two shots are the same to the bit.
+fn identical(a: &Shot, b: &Shot) -> bool {
+    let bits = |s: &Shot| {
+        let mut v: Vec<u64> = vec![s.duration.to_bits(), s.events.len() as u64];
+        for e in &s.events {
+            v.push(e.t.to_bits());
+            v.extend(e.balls.iter().map(|&b| b as u64));
+            for st in &e.after {
+                v.extend(
+                    st.pos
+                        .iter()
+                        .chain(&st.vel)
+                        .chain(&st.spin)
+                        .map(|x| x.to_bits()),
+                );
+            }
+        }
+        for st in s.final_states() {
+            v.extend(
+                st.pos
+                    .iter()
+                    .chain(&st.vel)
+                    .chain(&st.spin)
+                    .map(|x| x.to_bits()),
+            );
+        }
+        v
+    };
+    bits(a) == bits(b)
+}
+
+/// Runs `g` and checks it.
+pub fn check(g: &Generated) -> Verdict {
+    let run = catch_unwind(AssertUnwindSafe(|| check_inner(g)));
+    run.unwrap_or_else(|panic| {
+        let why = panic
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        Verdict {
+            ending: Ending::Panicked,
+            physical: g.physical,
+            failure: Some(format!("panic: {why}")),
+            events: 0,
+        }
+    })
+}
+
+fn check_inner(g: &Generated) -> Verdict {
+    let verdict = |ending, physical, failure: Option<String>, events| Verdict {
+        ending,
+        physical,
+        failure,
+        events,
+    };
+    let scene = match snooker_scene::parse(&g.text, "fuzz.toml") {
+        Ok(s) => s,
+        Err(e) => {
+            // Only hostile scenes may be rejected; the message must name the file.
+            let failure = (g.kind != Kind::Hostile)
+                .then(|| format!("a valid scene was rejected: {e}"))
+                .or_else(|| {
+                    (!e.to_string().starts_with("fuzz.toml"))
+                        .then(|| format!("the message does not name the file: {e}"))
+                });
+            return verdict(Ending::Rejected, g.physical, failure, 0);
+        }
+    };
+    let physical = physical_cloth(&scene.setup.params);
+    let first = simulate(&scene.setup, &scene.options);
+    let second = simulate(&scene.setup, &scene.options);
+    let shot = match (first, second) {
+        (Ok(a), Ok(b)) => {
+            if !identical(&a, &b) {
+                return verdict(
+                    Ending::AtRest,
+                    physical,
+                    Some("not deterministic".into()),
+                    a.events.len(),
+                );
+            }
+            a
+        }
+        (Err(a), Err(b)) => {
+            let ending = sim_ending(&a);
+            let failure = if a != b {
+                Some(format!("not deterministic: {a} / {b}"))
+            } else {
+                match ending {
+                    Ending::DidNotStop | Ending::EventCap if !physical => None,
+                    _ => Some(format!("{} (exit 1): {a}", ending.name())),
+                }
+            };
+            return verdict(ending, physical, failure, 0);
+        }
+        (a, b) => {
+            return verdict(
+                Ending::AtRest,
+                physical,
+                Some(format!("not deterministic: {:?} / {:?}", a.err(), b.err())),
+                0,
+            );
+        }
+    };
+    let broken = audit::events(&shot, MAX_OVERLAP);
+    let failure = (!broken.is_empty()).then(|| {
+        broken
+            .iter()
+            .take(5)
+            .map(|v| v.to_string())
+            .collect::<Vec<_>>()
+            .join("; ")
+    });
+    verdict(Ending::AtRest, physical, failure, shot.events.len())
+}

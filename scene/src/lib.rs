@@ -1,0 +1,170 @@
+//! Scene files (TOML) and the JSON result of the snooker engine: one home for the formats
+//! scripts outside the project read (the contract in `shared/formats.md`, extended in the
+//! README). A scene file becomes an engine [`Setup`] with the cue strike applied, its limits
+//! and a record of the strike; every bad input is one [`SceneError`] naming the file, the key
+//! and the reason. Used by the `snooker` command line, the validation crate and the planner.
+//!
+//! ```
+//! let scene = snooker_scene::parse(snooker_scene::DEFAULT_SCENE, "break-off.toml").unwrap();
+//! let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
+//! let json = snooker_scene::result::result_json(&scene, &shot);
+//! assert_eq!(json["scene"], "break-off");
+//! ```
+
+pub mod build;
+pub mod error;
+pub mod file;
+pub mod model;
+pub mod params;
+pub mod result;
+pub mod toml_input;
+
+pub use error::SceneError;
+pub use model::parse_model;
+pub use params::{OverrideError, override_params};
+pub use toml_input::from_toml;
+
+use snooker_engine::cue::{Cue, Strike};
+use snooker_engine::{BallState, Setup, SimOptions};
+use std::path::Path;
+
+/// The scene `snooker simulate` runs when given none: the break-off.
+pub const DEFAULT_SCENE: &str = include_str!("../../scenes/break-off.toml");
+/// The name shown for the built-in default scene.
+pub const DEFAULT_SCENE_FILE: &str = "scenes/break-off.toml (built in)";
+
+/// The ball a scene's cue strike hit, and what the strike did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StruckBall {
+    /// The ball's id.
+    pub id: String,
+    /// Its index in the setup's balls.
+    pub index: usize,
+    /// The strike as the scene file gives it.
+    pub cue: Cue,
+    /// What it did (the ball's state after it, contact point, squirt, speed ratio).
+    pub strike: Strike,
+    /// The ball's state before the strike.
+    pub before: BallState,
+}
+
+/// A loaded, validated scene.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// Free-text name.
+    pub name: String,
+    /// What the engine simulates (the cue strike already applied).
+    pub setup: Setup,
+    /// Limits of the simulation.
+    pub options: SimOptions,
+    /// The cue strike, if the scene has one.
+    pub strike: Option<StruckBall>,
+}
+
+/// Reads and validates a scene file.
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| SceneError::new(&file, "", format!("cannot read the scene file: {e}")))?;
+    parse(&text, &file)
+}
+
+/// Parses and validates scene text; `file` names it in error messages.
+pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+    build::build(from_toml(text, file)?, file)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(text: &str) -> SceneError {
+        parse(text, "t.toml").unwrap_err()
+    }
+
+    const BALL: &str = "[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\n";
+
+    #[test]
+    fn default_scene_loads() {
+        let s = parse(DEFAULT_SCENE, "break-off.toml").unwrap();
+        assert_eq!(s.setup.balls.len(), 22);
+        assert!(s.strike.is_some());
+    }
+
+    #[test]
+    fn errors_name_the_key() {
+        let e = err("[params]\nmu_slid = 0.2\n");
+        assert_eq!(e.key, "params.mu_slid");
+        assert!(e.reason.contains("mu_slid"), "{e}");
+        assert!(e.reason.contains("line 2"), "{e}");
+        let e = err("[[balls]]\nid = \"a\"\npos = [0.5, nan]\n");
+        assert_eq!(e.key, "balls[0].pos");
+        let e = err(
+            "[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\n[[balls]]\nid = \"b\"\npos = [0.51, 0.5]\n",
+        );
+        assert_eq!(e.key, "balls[1].pos");
+        assert!(e.reason.contains("overlaps"));
+        let e = err("[[balls]]\nid = \"a\"\npos = [5.0, 0.5]\n");
+        assert!(e.reason.contains("off the cloth"), "{e}");
+        let e = err(&format!(
+            "{BALL}[cue]\nball = \"a\"\nspeed = 2\naim = 0\noffset = [0.02, 0]\n"
+        ));
+        assert_eq!(e.key, "cue.offset");
+        assert!(e.reason.contains("miscue"));
+        let e = err("[models]\nball_ball = \"magic\"\n");
+        assert_eq!(e.key, "models.ball_ball");
+        let e = err("name = \n");
+        assert!(e.reason.contains("line 1"), "{e}");
+    }
+
+    #[test]
+    fn arrays_must_have_exactly_their_length() {
+        for (text, key) in [
+            (
+                "[[balls]]\nid = \"a\"\npos = [0.5, 0.5, 0.3]\n",
+                "balls[0].pos",
+            ),
+            ("[[balls]]\nid = \"a\"\npos = [0.5]\n", "balls[0].pos"),
+            (
+                "[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\nvel = [1, 0, 0, 0]\n",
+                "balls[0].vel",
+            ),
+            (
+                "[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\nspin = [1, 0]\n",
+                "balls[0].spin",
+            ),
+            (
+                &format!("{BALL}[cue]\nball = \"a\"\nspeed = 2\naim = 0\noffset = [0, 0, 0]\n"),
+                "cue.offset",
+            ),
+        ] {
+            let e = err(text);
+            assert_eq!(e.key, key, "{e}");
+            assert!(e.reason.contains("invalid length"), "{e}");
+        }
+    }
+
+    #[test]
+    fn absurd_numbers_are_rejected_naming_their_key() {
+        for (name, key) in [
+            ("g", "params.g"),
+            ("mu_slide", "params.mu_slide"),
+            ("sidespin_decel", "params.sidespin_decel"),
+            ("ball_mass", "params.ball_mass"),
+            ("ball_radius", "params.ball_radius"),
+        ] {
+            let e = err(&format!("[params]\n{name} = 1e308\n{BALL}"));
+            assert_eq!(e.key, key, "{e}");
+        }
+        let e = err("[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\nvel = [1e308, 0, 0]\n");
+        assert_eq!(e.key, "balls[0].vel", "{e}");
+        let e = err("[[balls]]\nid = \"a\"\npos = [0.5, 0.5]\nspin = [0, 0, 1e308]\n");
+        assert_eq!(e.key, "balls[0].spin", "{e}");
+        let e = err(&format!(
+            "{BALL}[cue]\nball = \"a\"\nspeed = 2\naim = 1e308\n"
+        ));
+        assert_eq!(e.key, "cue.aim", "{e}");
+        let e = err(&format!("{BALL}[sim]\nmax_time = 1e308\n"));
+        assert_eq!(e.key, "sim.max_time", "{e}");
+    }
+}

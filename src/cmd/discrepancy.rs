@@ -1,0 +1,187 @@
+//! `snooker discrepancy`: the workflow on measured data (find where simulation and measurement
+//! disagree, name the missing effects, add them, show the gap shrink), with its report, plots
+//! and Rerun overlays.
+
+use super::{bad_input, failed};
+use crate::output::{check_output, write_atomic};
+use crate::{plot, record};
+use anyhow::Context;
+use snooker_validation::discrepancy::{self as dsc, Findings, Measurement, data_file};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Arguments of `snooker discrepancy`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The measured data file (TOML; see the README).
+    data: PathBuf,
+    /// A model file ([params] and [models] as in a scene) to start from instead of the
+    /// scenes' own model.
+    #[arg(long, value_name = "FILE")]
+    model: Option<PathBuf>,
+    /// Write the full report (JSON, summary, plots) into this directory.
+    #[arg(long, value_name = "DIR")]
+    report: Option<PathBuf>,
+    /// Write the JSON report to this file.
+    #[arg(long, value_name = "OUT")]
+    json: Option<PathBuf>,
+    /// Print nothing but errors.
+    #[arg(long, short)]
+    quiet: bool,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> ExitCode {
+    let m = match data_file::load(&args.data, args.model.as_deref()) {
+        Ok(m) => m,
+        Err(e) => return bad_input(e),
+    };
+    if let Some(p) = &args.json
+        && let Err(e) = check_output(p)
+    {
+        return bad_input(format!("--json {}: {e}", p.display()));
+    }
+    if let Some(d) = &args.report {
+        // A file of that name, or a file on its way, is in the way of the report directory.
+        let in_the_way = if d.exists() && !d.is_dir() {
+            Err("is a file, not a directory".to_string())
+        } else {
+            check_output(&d.join("report.json"))
+        };
+        if let Err(e) = in_the_way {
+            return bad_input(format!("--report {}: {e}", d.display()));
+        }
+    }
+    let findings = match dsc::run(&m, &dsc::Options::default()) {
+        Ok(o) => o,
+        Err(e) => return failed(format!("{}: {e}", args.data.display())),
+    };
+    if !args.quiet {
+        print!("{}", dsc::report::text(&m, &findings));
+    }
+    match write(&args, &m, &findings) {
+        Ok(files) => {
+            if !args.quiet {
+                for f in files {
+                    println!("wrote {}", f.display());
+                }
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => bad_input(format!("{e:#}")),
+    }
+}
+
+/// Writes the JSON report and the report directory.
+fn write(req: &Args, m: &Measurement, o: &Findings) -> anyhow::Result<Vec<PathBuf>> {
+    let doc = dsc::report::json(m, o);
+    let text = serde_json::to_string_pretty(&doc)? + "\n";
+    let mut written = Vec::new();
+    if let Some(p) = &req.json {
+        write_atomic(p, text.as_bytes())?;
+        written.push(p.clone());
+    }
+    if let Some(dir) = &req.report {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        let json_path = dir.join("report.json");
+        write_atomic(&json_path, text.as_bytes())?;
+        written.push(json_path);
+        let txt = dir.join("summary.txt");
+        write_atomic(&txt, dsc::report::text(m, o).as_bytes())?;
+        written.push(txt);
+        if m.shots.iter().any(|s| !s.samples.is_empty()) {
+            let p = dir.join("tracks.png");
+            plot::tracks(m, &o.baseline.sims, &o.last.sims, &p)?;
+            written.push(p);
+            let p = dir.join("residuals.png");
+            plot::residuals(m, &o.baseline.sims, &o.last.sims, &p)?;
+            written.push(p);
+        }
+        if m.shots.iter().any(|s| !s.observables.is_empty()) {
+            let p = dir.join("observables.png");
+            plot::observables(o, &p)?;
+            written.push(p);
+        }
+        written.extend(write_overlays(m, o, dir)?);
+    }
+    Ok(written)
+}
+
+/// Colour of the measured centroids in the overlay recordings.
+pub const MEASURED_COLOR: [u8; 3] = [255, 0, 255];
+/// Colour of the start model's ball centres in the overlay recordings.
+pub const START_MODEL_COLOR: [u8; 3] = [255, 150, 0];
+
+/// The overlay recording's file name for shot `index` of `m`: `overlay.rrd` for a single
+/// shot, else `overlay-<index>-<name>.rrd` with the name reduced to safe characters.
+pub fn overlay_file(m: &Measurement, index: usize) -> String {
+    if m.shots.len() == 1 {
+        return "overlay.rrd".into();
+    }
+    let name: String = m.shots[index]
+        .name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .take(40)
+        .collect();
+    format!("overlay-{index}-{name}.rrd")
+}
+
+/// One Rerun recording per tracked shot: the final model's shot as balls, with the measured
+/// centroids (`measured/<ball>`) and the start model's centres at the same times
+/// (`start_model/<ball>`) as points on the cloth.
+fn write_overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    for (i, shot) in m.shots.iter().enumerate() {
+        if shot.samples.is_empty() {
+            continue;
+        }
+        let (start, last) = (&o.baseline.sims[i], &o.last.sims[i]);
+        let r = m.model.params.ball_radius;
+        let mut overlays = Vec::new();
+        for (b, id) in shot.ids().into_iter().enumerate() {
+            let seen: Vec<_> = shot.samples.iter().filter(|s| s.ball == b).collect();
+            if seen.is_empty() {
+                continue;
+            }
+            let at_z = |x: f64, y: f64| snooker_engine::Vec3::new(x, y, r);
+            overlays.push(record::Overlay {
+                entity: vec!["measured".into(), id.clone()],
+                points: seen
+                    .iter()
+                    .map(|s| (s.t, at_z(s.pos[0], s.pos[1])))
+                    .collect(),
+                color: MEASURED_COLOR,
+                radius: 0.008,
+            });
+            overlays.push(record::Overlay {
+                entity: vec!["start_model".into(), id],
+                points: seen
+                    .iter()
+                    .map(|s| (s.t, start.tracks[b].state_at(s.t, &start.params).pos))
+                    .collect(),
+                color: START_MODEL_COLOR,
+                radius: 0.006,
+            });
+        }
+        let view = snooker_scene::Scene {
+            name: format!("{} (final model)", shot.name),
+            setup: shot.setup.clone(),
+            options: snooker_engine::SimOptions::default(),
+            strike: None,
+        };
+        let bytes =
+            record::encode_with_overlays(&view, last, &record::RecordOptions::default(), &overlays)
+                .with_context(|| format!("overlay recording of shot {}", shot.name))?;
+        let p = dir.join(overlay_file(m, i));
+        write_atomic(&p, &bytes)?;
+        written.push(p);
+    }
+    Ok(written)
+}

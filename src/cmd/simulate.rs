@@ -1,0 +1,127 @@
+//! `snooker simulate`: one scene through the engine; a summary, the JSON result and a Rerun
+//! recording.
+
+use super::{bad_input, failed};
+use crate::{output, record};
+use snooker_scene::{self as scene, result};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Arguments of `snooker simulate`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scene file (TOML); see the README for the format.
+    pub scene: Option<PathBuf>,
+    /// Write the result as JSON to this file, or to standard output with `-`.
+    #[arg(long, value_name = "OUT")]
+    pub json: Option<String>,
+    /// Print nothing but errors (and the JSON if it goes to standard output).
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Write a Rerun recording of the shot to this file (open it with `rerun OUT.rrd`,
+    /// viewer `pip install rerun-sdk==0.36.3`; see docs/recording.md).
+    #[arg(long, value_name = "OUT.rrd")]
+    pub record: Option<PathBuf>,
+    /// Sample rate of the recording, Hz (every event instant is sampled as well).
+    #[arg(long, value_name = "HZ", default_value_t = record::DEFAULT_RATE, requires = "record")]
+    pub record_rate: f64,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> ExitCode {
+    let loaded = match &args.scene {
+        Some(p) => scene::load(p),
+        None => scene::parse(scene::DEFAULT_SCENE, scene::DEFAULT_SCENE_FILE),
+    };
+    let scene = match loaded {
+        Ok(s) => s,
+        Err(e) => return bad_input(e),
+    };
+    let json = args.json.as_deref();
+    if let Some(out) = json.filter(|o| *o != "-")
+        && let Err(e) = output::check_output(Path::new(out))
+    {
+        return bad_input(format!("--json {out}: {e}"));
+    }
+    let recording = args.record.map(|p| {
+        (
+            p,
+            record::RecordOptions {
+                rate: args.record_rate,
+            },
+        )
+    });
+    if let Some((out, opts)) = &recording {
+        if let Err(e) = output::check_output(out) {
+            return bad_input(format!("--record {}: {e}", out.display()));
+        }
+        if let Err(e) = opts.validate() {
+            return bad_input(format!("--record-rate {}: {e}", opts.rate));
+        }
+    }
+    let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
+        Ok(s) => s,
+        Err(e) => {
+            let file = args
+                .scene
+                .as_deref()
+                .map_or(scene::DEFAULT_SCENE_FILE.into(), |p| {
+                    p.display().to_string()
+                });
+            return failed(format!("{file}: {e}"));
+        }
+    };
+    let json_to_stdout = json == Some("-");
+    if !args.quiet {
+        let text = result::summary(&scene, &shot);
+        if json_to_stdout {
+            eprint!("{text}");
+        } else {
+            print!("{text}");
+        }
+    }
+    // The recording is made before anything is written, so that a failure leaves no result.
+    let recording = match recording {
+        None => None,
+        Some((out, opts)) => match record::encode(&scene, &shot, &opts) {
+            Ok(bytes) => Some((out, bytes)),
+            Err(e @ (record::RecordError::Rate(_) | record::RecordError::TooLarge(_))) => {
+                return bad_input(format!("--record {}: {e}", out.display()));
+            }
+            Err(e) => return failed(format!("--record {}: {e}", out.display())),
+        },
+    };
+    if let Some(out) = json {
+        let doc = result::result_json(&scene, &shot);
+        let text = serde_json::to_string_pretty(&doc).expect("JSON of finite numbers");
+        if out == "-" {
+            let mut stdout = std::io::stdout().lock();
+            if writeln!(stdout, "{text}").is_err() {
+                return ExitCode::from(super::FAILED);
+            }
+        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
+            return bad_input(format!("--json {out}: {e:#}"));
+        } else if !args.quiet {
+            println!("result written to {out}");
+        }
+    }
+    if let Some((out, bytes)) = recording {
+        if let Err(e) = output::write_atomic(&out, &bytes) {
+            return bad_input(format!("--record {}: {e:#}", out.display()));
+        }
+        if !args.quiet {
+            let note = format!(
+                "recording written to {0} (open it with `rerun {0}`)",
+                out.display()
+            );
+            // Standard output may be carrying the JSON; a closed pipe is no error here.
+            let _ = if json_to_stdout {
+                writeln!(std::io::stderr(), "{note}")
+            } else {
+                writeln!(std::io::stdout(), "{note}")
+            };
+        }
+    }
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,253 @@
+//! `snooker synth`: measured-like data with effects hidden in it: the scene simulated under its
+//! model plus the hidden effects, filmed with camera noise and dropped frames, written as a
+//! measured-data file (formats.md) with its tracks and scene beside it.
+
+use super::bad_input;
+use crate::output::{check_output, write_atomic};
+use anyhow::{Context, bail};
+use snooker_validation::discrepancy::data_file;
+use snooker_validation::discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
+use snooker_validation::discrepancy::{Effect, Model};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Arguments of `snooker synth`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scene the shot starts from (its model is the one without the hidden effects).
+    scene: PathBuf,
+    /// Hide an effect: a catalogue id with its value(s), e.g. table_slope=0.001,-0.0005,
+    /// or one outside the catalogue (wobble=AMPLITUDE_M). Repeatable.
+    #[arg(long = "effect", value_name = "NAME=VALUE[,VALUE]")]
+    effects: Vec<String>,
+    /// Override a parameter of the truth model, NAME=VALUE (repeatable).
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    params: Vec<String>,
+    /// Camera frames per second.
+    #[arg(long, default_value_t = 100.0)]
+    fps: f64,
+    /// Camera position noise, 1-sigma per coordinate, millimetres.
+    #[arg(long, value_name = "MM", default_value_t = 0.5)]
+    noise: f64,
+    /// Seed of the noise and the dropped frames.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Share of frames lost.
+    #[arg(long, default_value_t = 0.02)]
+    drop: f64,
+    /// Longest recording, s.
+    #[arg(long, default_value_t = 20.0)]
+    duration: f64,
+    /// Initial quantities the data file asks to fit, comma-separated (default: the
+    /// strike's speed, or every moving ball's vel and spin).
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    fit: Option<Vec<String>>,
+    /// The data file to write (DATA.toml; the tracks DATA.csv and the scene
+    /// DATA.scene.toml go beside it).
+    #[arg(short = 'o', long = "out", value_name = "DATA.toml")]
+    out: PathBuf,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> ExitCode {
+    let camera = Camera {
+        fps: args.fps,
+        noise: args.noise * 1e-3,
+        drop_rate: args.drop,
+        seed: args.seed,
+        max_duration: args.duration,
+    };
+    match synth(&args, &camera) {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => bad_input(format!("{e:#}")),
+    }
+}
+
+/// Parses `--effect NAME=V1[,V2]` into the hidden effects, checking each value against the
+/// effect's admissible range under the model they are added to.
+fn hidden(effects: &[String], base: &Model) -> anyhow::Result<Hidden> {
+    let mut h = Hidden::default();
+    for spec in effects {
+        let (name, values) = spec
+            .split_once('=')
+            .with_context(|| format!("--effect {spec}: expected NAME=VALUE[,VALUE]"))?;
+        let values: Vec<f64> = values
+            .split(',')
+            .map(|v| {
+                v.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .with_context(|| format!("--effect {spec}: `{v}` is not a finite number"))
+            })
+            .collect::<anyhow::Result<_>>()?;
+        let name = name.trim();
+        if let Some(e) = Effect::from_id(name) {
+            let model = h.truth(base);
+            let params = e.params(&model);
+            if params.is_empty() {
+                bail!(
+                    "--effect {spec}: {name} cannot be switched on in this model (a tilt needs \
+                     rolling resistance to hold resting balls)"
+                );
+            }
+            if params.len() != values.len() {
+                bail!(
+                    "--effect {spec}: {name} takes {} value(s): {}",
+                    params.len(),
+                    params.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+                );
+            }
+            for (p, v) in params.iter().zip(&values) {
+                if *v < p.low || *v > p.high {
+                    bail!(
+                        "--effect {spec}: {} = {v} is outside [{}, {}] {}",
+                        p.name,
+                        p.low,
+                        p.high,
+                        p.unit
+                    );
+                }
+            }
+            h.effects.push((e, values));
+        } else if let Some(u) = Uncatalogued::from_name(name, values[0]) {
+            if values.len() != 1 || !(values[0] >= 0.0 && values[0] < 0.05) {
+                bail!("--effect {spec}: {name} takes one amplitude in [0, 0.05) m");
+            }
+            h.uncatalogued.push(u);
+        } else {
+            bail!(
+                "--effect {spec}: unknown effect `{name}` (catalogue: {}; outside it: {})",
+                Effect::ALL.map(|e| e.id()).join(", "),
+                Uncatalogued::NAMES.join(", ")
+            );
+        }
+    }
+    Ok(h)
+}
+
+/// Writes synthetic measured data; returns a summary.
+fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
+    let sc = snooker_scene::load(&req.scene)?;
+    let mut shot = data_file::shot_from_scene(&sc);
+    let base = Model {
+        params: snooker_scene::override_params(sc.setup.params, &req.params)?,
+        models: sc.setup.models,
+    };
+    let hidden = hidden(&req.effects, &base)?;
+    let truth = hidden.truth(&base);
+    let ids = shot.ids();
+    let fit: Vec<String> = match &req.fit {
+        Some(f) => f.clone(),
+        None if shot.strike.is_some() => vec!["strike.speed".into()],
+        None => shot
+            .setup
+            .balls
+            .iter()
+            .filter(|b| b.state.motion.is_moving() || b.state.spin.norm() > 0.0)
+            .flat_map(|b| [format!("{}.vel", b.id), format!("{}.spin", b.id)])
+            .collect(),
+    };
+    // The data file must read back: check the fit list the way the reader will.
+    for f in &fit {
+        let Some((who, what)) = f.rsplit_once('.') else {
+            bail!("--fit {f}: expected BALL.pos|vel|spin or strike.speed|aim|offset|elevation");
+        };
+        let ok = if who == "strike" {
+            shot.strike.is_some() && ["speed", "aim", "offset", "elevation"].contains(&what)
+        } else {
+            ids.iter().any(|i| i == who) && ["pos", "vel", "spin"].contains(&what)
+        };
+        if !ok {
+            bail!(
+                "--fit {f}: not a quantity of this scene (balls {})",
+                ids.join(", ")
+            );
+        }
+    }
+    let (sim, samples) = film(&shot, &truth, &hidden.uncatalogued, camera)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", req.scene.display()))?;
+    shot.samples = samples;
+    let out = &req.out;
+    if out.extension().and_then(|e| e.to_str()) != Some("toml") {
+        bail!(
+            "-o {}: the data file's name must end in .toml",
+            out.display()
+        );
+    }
+    let stem = out
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .context("-o: no file name")?;
+    let dir = out
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if let Err(e) = check_output(out) {
+        bail!("-o {}: {e}", out.display());
+    }
+    let truth_text: Vec<String> = hidden
+        .effects
+        .iter()
+        .map(|(e, v)| {
+            format!(
+                "{}={}",
+                e.id(),
+                v.iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()
+                    .join(",")
+            )
+        })
+        .chain(hidden.uncatalogued.iter().map(|u| match u {
+            Uncatalogued::Wobble { amplitude } => format!("wobble={amplitude}"),
+        }))
+        .chain(req.params.iter().cloned())
+        .collect();
+    let comment = format!(
+        "Synthetic measurement by `snooker synth` from {}\nhidden: {}\ncamera: {} frames/s, \
+         noise {} mm, {}% frames dropped, seed {}",
+        req.scene.display(),
+        if truth_text.is_empty() {
+            "nothing".into()
+        } else {
+            truth_text.join(" ")
+        },
+        camera.fps,
+        camera.noise * 1e3,
+        camera.drop_rate * 100.0,
+        camera.seed
+    );
+    let scene_name = format!("{stem}.scene.toml");
+    let tracks_name = format!("{stem}.csv");
+    let scene_text = std::fs::read_to_string(&req.scene)
+        .with_context(|| format!("cannot read {}", req.scene.display()))?;
+    let files = [
+        (dir.join(&scene_name), scene_text),
+        (
+            dir.join(&tracks_name),
+            data_file::tracks_csv(&shot.samples, &ids, &comment),
+        ),
+        (
+            out.clone(),
+            data_file::data_toml(&comment, &scene_name, &tracks_name, camera.noise, &fit),
+        ),
+    ];
+    for (path, text) in &files {
+        write_atomic(path, text.as_bytes())?;
+    }
+    Ok(format!(
+        "{}\n{} samples of {} balls over {:.2} s (the shot lasts {:.2} s)\nwrote {}, {}, {}\n",
+        comment,
+        shot.samples.len(),
+        ids.len(),
+        shot.last_sample(),
+        sim.duration,
+        out.display(),
+        dir.join(&tracks_name).display(),
+        dir.join(&scene_name).display()
+    ))
+}
