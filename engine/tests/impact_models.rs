@@ -6,8 +6,8 @@ use proptest::prelude::*;
 use snooker_engine::impact::ball_ball::{self, mathavan as bb};
 use snooker_engine::impact::cushion::mathavan as cush;
 use snooker_engine::impact::impulse::Kinematics;
-use snooker_engine::motion::{self, Transition};
-use snooker_engine::{BallState, EventKind, Motion, Params, Vec3};
+use snooker_engine::motion;
+use snooker_engine::{BallState, Motion, Params, Vec3};
 
 use snooker_engine::impact::incoming::{ball_ball as pair, cushion as at_cushion};
 use snooker_engine::impact::sweep;

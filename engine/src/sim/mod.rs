@@ -112,7 +112,7 @@ pub enum SimError {
         /// Time, s.
         t: f64,
         /// What failed.
-        reason: String,
+        error: crate::impact::ImpactError,
     },
     /// A non-finite number appeared (a bug: reported rather than passed on).
     NonFinite {
@@ -140,10 +140,11 @@ impl std::fmt::Display for SimError {
                 "balls were still moving after {max_time} s of simulated time \
                  (is there no rolling resistance or sliding friction?)"
             ),
-            SimError::Impact { balls, t, reason } => write!(
+            SimError::Impact { balls, t, error } => write!(
                 f,
-                "internal error: the impact of {} at t = {t} s failed: {reason}",
-                balls.join(" and ")
+                "internal error: the impact of {} at t = {t} s failed: {}",
+                balls.join(" and "),
+                error.reason()
             ),
             SimError::NonFinite { ball, t } => write!(
                 f,
@@ -451,7 +452,7 @@ impl Sim<'_> {
         SimError::Impact {
             balls: balls.iter().map(|&i| self.tracks[i].id.clone()).collect(),
             t: self.now,
-            reason: err.0,
+            error: err,
         }
     }
 
