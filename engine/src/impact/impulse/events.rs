@@ -71,12 +71,22 @@ pub(super) fn slip_event(law: Friction, s: Vec3, zero: f64) -> f64 {
     }
 }
 
+/// A support's event function within this of zero (in units of V, or of the normal impulse
+/// per unit dP) is zero: the events' own resolution ([`super::phase`]'s root tolerance). A
+/// ball on the cloth whose other vertical forces cancel (both balls on the cloth, friction
+/// horizontal) feels a vertical force of rounding size, 1e-18 to 1e-15, whose sign is noise:
+/// it neither presses nor lifts (thesis §6.1.2), and must not switch the phase.
+const SUPPORT_RESOLUTION: f64 = 1e-12;
+
 /// The event function of body `i`'s support: its vertical speed while it is up (it comes
 /// back down), the other vertical forces on it while it is down (they change sign where the
-/// cloth starts or stops holding it); `fz` gives those forces, computed only if needed.
+/// cloth starts or stops holding it); `fz` gives those forces, computed only if needed. Zero
+/// within [`SUPPORT_RESOLUTION`]: an event function that starts at zero is armed only once
+/// it leaves it, so noise about a switch never ends a phase.
 #[inline(always)]
 fn support_event(vz: f64, fz: impl FnOnce() -> f64) -> f64 {
-    if vz > 0.0 { vz } else { fz() }
+    let g = if vz > 0.0 { vz } else { fz() };
+    if g.abs() > SUPPORT_RESOLUTION { g } else { 0.0 }
 }
 
 impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'_, M, P, AT_ZERO> {
