@@ -1,6 +1,7 @@
 //! Why a shot could not be simulated.
 
 use super::setup::SetupError;
+use crate::impact::ImpactError;
 
 /// Why a simulation stopped without finishing the shot.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,7 +34,7 @@ pub enum SimError {
         /// Time, s.
         t: f64,
         /// What failed.
-        reason: String,
+        error: ImpactError,
     },
     /// A non-finite number appeared (a bug: reported rather than passed on).
     NonFinite {
@@ -61,10 +62,11 @@ impl std::fmt::Display for SimError {
                 "balls were still moving after {max_time} s of simulated time \
                  (is there no rolling resistance or sliding friction?)"
             ),
-            SimError::Impact { balls, t, reason } => write!(
+            SimError::Impact { balls, t, error } => write!(
                 f,
-                "internal error: the impact of {} at t = {t} s failed: {reason}",
-                balls.join(" and ")
+                "internal error: the impact of {} at t = {t} s failed: {}",
+                balls.join(" and "),
+                error.reason()
             ),
             SimError::NonFinite { ball, t } => write!(
                 f,

@@ -259,7 +259,7 @@ impl Sim<'_> {
         SimError::Impact {
             balls: balls.iter().map(|&i| self.tracks[i].id.clone()).collect(),
             t: self.now,
-            reason: err.0,
+            error: err,
         }
     }
 

@@ -3,7 +3,8 @@
 //! over it. The phase is taken as one step of Heun's method, of the length the slip's rate
 //! predicts, rather than a full step of the integrator and a search for the event.
 
-use super::{ESTABLISHED_PER_ZERO, Friction, K, Mode};
+use super::events::{Event, K};
+use super::mode::{ESTABLISHED_PER_ZERO, Friction, Mode};
 use crate::ball::Vec3;
 use crate::impact::dopri::{ErrorMeasure, Events};
 
@@ -19,7 +20,7 @@ pub(super) fn establish<const M: usize, F, G, S, X>(
     g: &G,
     slips: &S,
     measure: &X,
-) -> Option<(f64, [f64; M], usize)>
+) -> Option<(f64, [f64; M], Event)>
 where
     F: Fn(&[f64; M]) -> [f64; M],
     G: Events<M, K>,
@@ -68,8 +69,9 @@ where
     }
     let (g0, g1) = (g.all(y), g.all(&y1));
     let crossed = |e: usize| g0[e] != 0.0 && (g1[e] == 0.0 || (g1[e] > 0.0) != (g0[e] > 0.0));
-    if (0..K).any(|e| e != 2 + k && crossed(e)) {
+    let event = Event::Slip(k);
+    if (0..K).any(|e| e != event.index() && crossed(e)) {
         return None;
     }
-    Some((dp, y1, 2 + k))
+    Some((dp, y1, event))
 }

@@ -1,0 +1,296 @@
+//! Coulomb's law at contacts whose slip is zero (thesis §6.1.2.1, §6.2.2.1, with Coulomb's
+//! stick in place of the thesis's "no stick"; see [`super`]): those that can hold do, with the
+//! frictions that keep their slips at zero (one small linear solve), and the others creep out
+//! of zero at mu N in the one direction their friction leaves growing.
+
+// Small dense linear algebra reads best with explicit indices.
+#![allow(clippy::needless_range_loop)]
+
+use super::laws::{Forces, Held, Local, NONE_HELD};
+use super::mode::{Friction, Mode, PRIMARY};
+use super::pair::Pair;
+use super::problem::Contact;
+use crate::ball::Vec3;
+
+/// Solves the small dense system `a x = b` (n <= 6) by Gaussian elimination with partial
+/// pivoting; `None` if it is singular.
+fn solve_dense(a: &mut [[f64; 6]; 6], b: &mut [f64; 6], n: usize) -> Option<()> {
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() < 1e-14 {
+            return None;
+        }
+        a.swap(c, p);
+        b.swap(c, p);
+        for r in c + 1..n {
+            let f = a[r][c] / a[c][c];
+            for k in c..n {
+                a[r][k] -= f * a[c][k];
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    for c in (0..n).rev() {
+        let s: f64 = (c + 1..n).map(|k| a[c][k] * b[k]).sum();
+        b[c] = (b[c] - s) / a[c][c];
+    }
+    Some(())
+}
+
+/// A contact's slip rate (in its tangent basis) as an affine function of its friction F:
+/// `at_zero + per_unit F`.
+#[derive(Clone, Copy, Debug)]
+struct Affine {
+    at_zero: [f64; 2],
+    per_unit: [[f64; 2]; 2],
+}
+
+fn unit_or(v: Vec3, fallback: Vec3) -> Vec3 {
+    let n = v.norm();
+    if n > 0.0 { v / n } else { fallback }
+}
+
+impl Contact {
+    /// Two unit vectors spanning contact `k`'s tangent plane.
+    fn tangents(&self, k: usize) -> [Vec3; 2] {
+        if k == PRIMARY {
+            let t = unit_or(
+                self.normal.cross(&Vec3::z()),
+                self.normal.cross(&Vec3::x()).normalize(),
+            );
+            [t, self.normal.cross(&t)]
+        } else {
+            [Vec3::x(), Vec3::y()]
+        }
+    }
+
+    /// Normal force (per unit dP) at contact `k`.
+    fn normal_force(&self, f: &Forces, k: usize) -> f64 {
+        if k == PRIMARY { 1.0 } else { f.reaction[k - 1] }
+    }
+
+    /// Rate of change of contact `k`'s slip, given the state's rates `dy`.
+    fn slip_rate<const M: usize, P: Pair<M>>(&self, dy: &[f64; M], k: usize) -> Vec3 {
+        if k == PRIMARY {
+            let (du, dn) = self.primary_motion::<M, P>(dy);
+            du - dn * self.normal
+        } else {
+            Self::cloth_slip::<M, P>(dy, k - 1)
+        }
+    }
+
+    /// Slip rates (in each contact's tangent basis) of the contacts in `which`, when the
+    /// contacts at zero slip exert the frictions `held`.
+    fn rates<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &Held,
+        which: &[usize],
+    ) -> [f64; 6] {
+        let forces = self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, held);
+        let dy = self.derivatives::<M, P>(loc.vn, &forces);
+        let mut r = [0.0; 6];
+        for (j, &k) in which.iter().enumerate() {
+            let d = self.slip_rate::<M, P>(&dy, k);
+            let t = self.tangents(k);
+            r[2 * j] = d.dot(&t[0]);
+            r[2 * j + 1] = d.dot(&t[1]);
+        }
+        r
+    }
+
+    /// Sets in `held` the frictions that keep the slip rates of the contacts in `which` at
+    /// zero, the other frictions in `held` fixed. The rates are affine in these frictions, so
+    /// this is one small linear solve. For a single contact, also returns its rates at zero
+    /// friction and their change per unit friction along each tangent (what
+    /// [`Contact::creep`] needs, so that it need not probe them again).
+    fn hold<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &mut Held,
+        which: &[usize],
+    ) -> Option<Affine> {
+        let n = 2 * which.len();
+        for &k in which {
+            held[k] = Vec3::zeros();
+        }
+        let base = self.rates::<M, P>(y, loc, mode, held, which);
+        let mut a = [[0.0; 6]; 6];
+        for col in 0..n {
+            let (j, c) = (col / 2, col % 2);
+            let mut probe = *held;
+            probe[which[j]] = self.tangents(which[j])[c];
+            let r = self.rates::<M, P>(y, loc, mode, &probe, which);
+            for row in 0..n {
+                a[row][col] = r[row] - base[row];
+            }
+        }
+        let single = (n == 2).then(|| Affine {
+            at_zero: [base[0], base[1]],
+            per_unit: [[a[0][0], a[0][1]], [a[1][0], a[1][1]]],
+        });
+        let mut b = [0.0; 6];
+        for row in 0..n {
+            b[row] = -base[row];
+        }
+        if solve_dense(&mut a, &mut b, n).is_some() {
+            for (j, &k) in which.iter().enumerate() {
+                let t = self.tangents(k);
+                held[k] = b[2 * j] * t[0] + b[2 * j + 1] * t[1];
+            }
+        }
+        single
+    }
+
+    /// How contact `k`, at zero slip and unable to hold, creeps out of zero (the other
+    /// frictions in `held` fixed). Its slip rate is affine in its friction F: rate = d + B F.
+    /// With Coulomb friction F = -c s (c = mu N) a slip growing as lambda s needs
+    /// (lambda I + c B) s = d with |s| = 1 and lambda >= 0; |(lambda I + c B)^-1 d| falls with
+    /// lambda, so lambda is found in a bracket (by Newton's method, safeguarded by bisection;
+    /// lambda = 0, the edge of holding, gives the direction opposite to the holding force, so
+    /// friction is continuous there). Returns the friction, the direction and lambda.
+    fn creep<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &Held,
+        k: usize,
+        known: Option<Affine>,
+    ) -> (Vec3, Vec3, f64) {
+        let t = self.tangents(k);
+        let mut probe = *held;
+        probe[k] = Vec3::zeros();
+        let cap = self.coefficient(k)
+            * self.normal_force(
+                &self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, &probe),
+                k,
+            );
+        let Affine {
+            at_zero: d,
+            per_unit: b,
+        } = known.unwrap_or_else(|| {
+            let d6 = self.rates::<M, P>(y, loc, mode, &probe, &[k]);
+            let d = [d6[0], d6[1]];
+            let mut b = [[0.0; 2]; 2];
+            for c in 0..2 {
+                probe[k] = t[c];
+                let r = self.rates::<M, P>(y, loc, mode, &probe, &[k]);
+                b[0][c] = r[0] - d[0];
+                b[1][c] = r[1] - d[1];
+            }
+            Affine {
+                at_zero: d,
+                per_unit: b,
+            }
+        });
+        // s(lambda) = M^-1 d with M = lambda I + c B, and M^-1 s (for d s / d lambda = -M^-1 s).
+        let s_of = |lambda: f64| {
+            let (a, bb, c, dd) = (
+                lambda + cap * b[0][0],
+                cap * b[0][1],
+                cap * b[1][0],
+                lambda + cap * b[1][1],
+            );
+            let det = a * dd - bb * c;
+            let s = [(dd * d[0] - bb * d[1]) / det, (a * d[1] - c * d[0]) / det];
+            let ms = [(dd * s[0] - bb * s[1]) / det, (a * s[1] - c * s[0]) / det];
+            (s, ms)
+        };
+        let norm = |v: [f64; 2]| (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let mut lambda = 0.0;
+        if norm(s_of(0.0).0) > 1.0 {
+            // Newton's method on 1/|s| - 1, nearly linear in lambda (|s| ~ |d| / lambda for
+            // large lambda), so a handful of steps reach rounding; kept strictly inside the
+            // bracket [lo, hi] of the root, halving it whenever a step would not be, and
+            // stopping at the width a bisection of the whole bracket would end at.
+            let (mut lo, mut hi) = (0.0, norm(d) + cap * (b[0][0].abs() + b[1][1].abs()) + 1.0);
+            let width = hi * f64::EPSILON;
+            for _ in 0..100 {
+                let (s, ms) = s_of(lambda);
+                let ns = norm(s);
+                let g = 1.0 / ns - 1.0;
+                if g == 0.0 {
+                    break;
+                } else if g < 0.0 {
+                    lo = lambda;
+                } else {
+                    hi = lambda;
+                }
+                let slope = (s[0] * ms[0] + s[1] * ms[1]) / (ns * ns * ns);
+                let mut next = lambda - g / slope;
+                if !(next > lo && next < hi) {
+                    next = 0.5 * (lo + hi);
+                }
+                let done = (next - lambda).abs() <= 1e-15 * next || hi - lo <= width;
+                lambda = next;
+                if done {
+                    break;
+                }
+            }
+        }
+        let s = s_of(lambda).0;
+        let dir = unit_or(s[0] * t[0] + s[1] * t[1], t[0]);
+        (-cap * dir, dir, lambda)
+    }
+
+    /// Frictions of the contacts at zero slip, by Coulomb's law taken jointly: those that can
+    /// hold do (one linear solve for all of them), the others creep at mu N (one at a time,
+    /// each release changing what the rest need). Also returns, per contact, the creeping
+    /// direction and its lambda.
+    pub(super) fn at_zero<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+    ) -> ([Vec3; 3], [Option<(Vec3, f64)>; 3]) {
+        let mut held = [Vec3::zeros(); 3];
+        let mut creeping: [Option<(Vec3, f64)>; 3] = [None; 3];
+        for _ in 0..3 {
+            let mut which_at = [0usize; 3];
+            let mut n = 0;
+            for k in 0..3 {
+                if mode.friction[k] == Friction::AtZero && creeping[k].is_none() {
+                    which_at[n] = k;
+                    n += 1;
+                }
+            }
+            if n == 0 {
+                break;
+            }
+            // Alone at zero, the contact's rates as `hold` probed them are those `creep` needs
+            // (the other frictions are the same).
+            let single = self.hold::<M, P>(y, loc, mode, &mut held, &which_at[..n]);
+            let f = self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, &held);
+            let excess = |k: usize| held[k].norm() - self.coefficient(k) * self.normal_force(&f, k);
+            let worst = which_at[..n]
+                .iter()
+                .copied()
+                .filter(|&k| excess(k) > 0.0)
+                .max_by(|&a, &b| excess(a).total_cmp(&excess(b)));
+            let Some(k) = worst else { break };
+            let (force, dir, lambda) = self.creep::<M, P>(y, loc, mode, &held, k, single);
+            held[k] = force;
+            creeping[k] = Some((dir, lambda));
+        }
+        (held, creeping)
+    }
+
+    /// All forces under `mode` (contacts at zero slip by [`Contact::at_zero`]).
+    pub(super) fn forces<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+    ) -> Forces {
+        if !mode.any_at_zero() {
+            return self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, &NONE_HELD);
+        }
+        let (held, _) = self.at_zero::<M, P>(y, loc, mode);
+        self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, &held)
+    }
+}

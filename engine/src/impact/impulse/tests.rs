@@ -1,0 +1,290 @@
+//! The solver's faster ways against the ways round them, and the pieces' own properties.
+
+use super::events::{Event, K};
+use super::mode::{Friction, Mode};
+use super::pair::{FIXED_DIM, Fixed, Free, N, Pair};
+use super::phase::PhaseLaws;
+use super::solve::Paths;
+use super::*;
+use crate::ball::Vec3;
+use crate::impact::dopri::{ErrorMeasure, Events};
+use crate::impact::sweep::Rng;
+
+const R: f64 = 0.02625;
+const MASS: f64 = 0.141;
+
+/// A ball-ball or ball-cushion contact (as the Mathavan models set them up) and random
+/// velocities that approach, with frictions up to 0.6.
+fn random_impact(rng: &mut Rng, cushion: bool) -> (Contact, Kinematics) {
+    let (mu, mu_cloth, e) = (
+        rng.uniform(0.0, 0.6),
+        rng.uniform(0.0, 0.6),
+        rng.uniform(0.5, 1.0),
+    );
+    let angle = rng.uniform(0.0, std::f64::consts::TAU);
+    let plan = Vec3::new(angle.cos(), angle.sin(), 0.0);
+    // One ball in ten is in the air (off the cloth) at the impact.
+    let lifted = rng.uniform(0.0, 1.0) < 0.1;
+    let (bodies, normal, arm) = if cushion {
+        let n = -(21f64.sqrt() / 5.0) * plan + 0.4 * Vec3::z();
+        ([Body::ball(!lifted), Body::fixed()], n, [n, Vec3::zeros()])
+    } else {
+        ([Body::ball(!lifted), Body::ball(true)], plan, [plan, -plan])
+    };
+    let c = Contact {
+        bodies,
+        normal,
+        arm,
+        mu,
+        mu_cloth,
+        e,
+    };
+    loop {
+        let mut k = Kinematics {
+            vel: [rng.vec(3.0), rng.vec(1.0)],
+            spin: [rng.vec(3.0 / R), rng.vec(1.0 / R)],
+        };
+        for i in 0..2 {
+            if c.bodies[i].on_cloth {
+                k.vel[i].z = 0.0;
+            }
+            if c.bodies[i].is_fixed() {
+                k.vel[i] = Vec3::zeros();
+                k.spin[i] = Vec3::zeros();
+            }
+        }
+        if c.scaled(&k, R).is_ok() {
+            return (c, k);
+        }
+    }
+}
+
+/// A random mode: each contact off, slipping, starting or at zero, either stage.
+fn random_mode(rng: &mut Rng) -> Mode {
+    let mut mode = Mode {
+        friction: [Friction::Off; 3],
+        compressing: rng.uniform(0.0, 1.0) < 0.5,
+        w_target: rng.uniform(-1.0, 1.0),
+        zero: 10f64.powf(rng.uniform(-9.0, 0.0)),
+    };
+    for law in &mut mode.friction {
+        let r = rng.vec(1.0).normalize();
+        *law = match (rng.uniform(0.0, 4.0)) as usize {
+            0 => Friction::Off,
+            1 => Friction::Slip(r),
+            2 => Friction::Starting(r),
+            _ => Friction::AtZero,
+        };
+    }
+    mode
+}
+
+/// A random whole state of `c`, a fixed body's entries zero, balls on the cloth down (held)
+/// or up (free).
+fn random_state(rng: &mut Rng, c: &Contact) -> [f64; N] {
+    let mut y = [0.0; N];
+    for i in 0..2 {
+        if !c.bodies[i].is_fixed() {
+            let mut v = rng.vec(2.0);
+            if c.bodies[i].on_cloth && rng.uniform(0.0, 1.0) < 0.5 {
+                v.z = 0.0;
+            }
+            Free::put(&mut y, i, v, rng.vec(2.0));
+        }
+    }
+    y[pair::WORK] = rng.uniform(-2.0, 2.0);
+    y
+}
+
+/// The slopes, events and slips of `laws` at `y`, as bits.
+fn laws_bits<const M: usize, P: Pair<M>, const Z: bool>(
+    laws: &PhaseLaws<M, P, Z>,
+    y: &[f64; M],
+) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    let whole = P::whole(&laws.slopes(y));
+    let events = laws.all(y);
+    let slips = laws.contact.local::<M, P>(y).slip;
+    (
+        whole.iter().map(|v| v.to_bits()).collect(),
+        events.iter().map(|v| v.to_bits()).collect(),
+        slips
+            .iter()
+            .flat_map(|s| s.iter().map(|v| v.to_bits()))
+            .collect(),
+    )
+}
+
+#[test]
+fn a_fixed_body_has_the_same_laws_on_the_reduced_state_as_on_the_whole() {
+    // The laws written once, instantiated for a fixed body 1 (its velocities left out) and for
+    // a free one of zero inverse mass: bitwise the same slopes, events and slips, with and
+    // without contacts at zero slip.
+    let mut rng = Rng(0x5eed_1234_abcd_0001);
+    let mut compared = [0; 2];
+    for _ in 0..10_000 {
+        let (c, _) = random_impact(&mut rng, true);
+        let y = random_state(&mut rng, &c);
+        let z = Fixed::part(&y);
+        let mode = random_mode(&mut rng);
+        let (free, fixed) = if mode.any_at_zero() {
+            (
+                laws_bits(&PhaseLaws::<N, Free, true>::new(&c, &mode), &y),
+                laws_bits(&PhaseLaws::<FIXED_DIM, Fixed, true>::new(&c, &mode), &z),
+            )
+        } else {
+            (
+                laws_bits(&PhaseLaws::<N, Free, false>::new(&c, &mode), &y),
+                laws_bits(&PhaseLaws::<FIXED_DIM, Fixed, false>::new(&c, &mode), &z),
+            )
+        };
+        assert_eq!(free, fixed, "{c:?} {y:?} {mode:?}");
+        compared[usize::from(mode.any_at_zero())] += 1;
+    }
+    assert!(compared.iter().all(|&n| n > 1000), "{compared:?}");
+}
+
+/// Checks that each event function alone is bitwise its entry among all of them.
+fn check_one_event<const M: usize, P: Pair<M>, const Z: bool>(
+    laws: &PhaseLaws<M, P, Z>,
+    y: &[f64; M],
+) {
+    let all = laws.all(y);
+    for (e, value) in all.into_iter().enumerate() {
+        assert_eq!(
+            laws.one(y, e).to_bits(),
+            value.to_bits(),
+            "event {:?}",
+            Event::at(e)
+        );
+    }
+}
+
+#[test]
+fn each_event_function_alone_is_its_entry_among_all() {
+    let mut rng = Rng(0x5eed_1234_abcd_0004);
+    for case in 0..10_000 {
+        let cushion = case % 2 == 1;
+        let (c, _) = random_impact(&mut rng, cushion);
+        let y = random_state(&mut rng, &c);
+        let mode = random_mode(&mut rng);
+        match (cushion, mode.any_at_zero()) {
+            (false, false) => check_one_event(&PhaseLaws::<N, Free, false>::new(&c, &mode), &y),
+            (false, true) => check_one_event(&PhaseLaws::<N, Free, true>::new(&c, &mode), &y),
+            (true, false) => check_one_event(
+                &PhaseLaws::<FIXED_DIM, Fixed, false>::new(&c, &mode),
+                &Fixed::part(&y),
+            ),
+            (true, true) => check_one_event(
+                &PhaseLaws::<FIXED_DIM, Fixed, true>::new(&c, &mode),
+                &Fixed::part(&y),
+            ),
+        }
+    }
+}
+
+#[test]
+fn events_are_named_by_their_place() {
+    for e in 0..K {
+        assert_eq!(Event::at(e).index(), e);
+    }
+}
+
+#[test]
+fn the_reduced_state_gives_the_whole_states_integration_bitwise() {
+    // A fixed cushion's velocities left out of the state change the cost of an impact, not
+    // one bit of its result or its trace (Heun's step for a starting slip taken on either).
+    let mut rng = Rng(0x5eed_1234_abcd_0002);
+    let whole = Paths {
+        reduce: false,
+        establish: true,
+    };
+    for _ in 0..1_000 {
+        let (c, k) = random_impact(&mut rng, true);
+        let (mut t_reduced, mut t_whole) = (Vec::new(), Vec::new());
+        let reduced = c.solve_with(&k, R, MASS, TOLERANCE, Some(&mut t_reduced), Paths::FAST);
+        let general = c.solve_with(&k, R, MASS, TOLERANCE, Some(&mut t_whole), whole);
+        assert_eq!(reduced, general, "{c:?} {k:?}");
+        assert_eq!(t_reduced, t_whole, "{c:?} {k:?}");
+    }
+}
+
+#[test]
+fn heuns_step_establishes_a_slip_as_the_full_integration_does() {
+    // Over random impacts, many with a slip growing out of zero (a rolling ball's cloth
+    // contact): the same results to the solver's accuracy, and the shortcut is taken.
+    let mut rng = Rng(0x5eed_1234_abcd_0003);
+    let without = Paths {
+        reduce: true,
+        establish: false,
+    };
+    let (mut shortened, mut diffs) = (0, Vec::new());
+    for case in 0..2_000 {
+        let (c, mut k) = random_impact(&mut rng, case % 2 == 1);
+        if case % 4 < 2 {
+            // Rolling: the cloth slip under body 0 starts at zero.
+            k.spin[0] = Vec3::z().cross(&k.vel[0]) / R;
+        }
+        let Ok(fast) = c.solve_with(&k, R, MASS, TOLERANCE, None, Paths::FAST) else {
+            continue;
+        };
+        let slow = c.solve_with(&k, R, MASS, TOLERANCE, None, without).unwrap();
+        // The shortcut changes the results at rounding level where it is taken.
+        shortened += usize::from(fast.after != slow.after);
+        let scale = (k.vel[0] - k.vel[1]).norm();
+        let diff = (0..2)
+            .map(|i| {
+                let dv = (fast.after.vel[i] - slow.after.vel[i]).norm();
+                let dw = (fast.after.spin[i] - slow.after.spin[i]).norm() * R;
+                dv.max(dw) / scale
+            })
+            .fold(0.0, f64::max);
+        diffs.push(diff);
+    }
+    // Where it was taken, the difference is of the order of the tolerance, and nowhere
+    // near the solver's accuracy (1e-6 of V; these frictions reach 0.6).
+    diffs.retain(|&d| d > 0.0);
+    diffs.sort_by(f64::total_cmp);
+    let n = diffs.len();
+    assert!(n > 300 && shortened == n, "{shortened} impacts shortened");
+    assert!(diffs[n / 2] < 1e-8, "median {:e}", diffs[n / 2]);
+    assert!(diffs[n - 1] < 1e-6, "worst {:e}", diffs[n - 1]);
+}
+
+#[test]
+fn slips_are_measured_relative_to_their_size() {
+    // The same error in a slip: accepted on a large slip, rejected on one near zero,
+    // where it would turn the friction's direction.
+    let c = Contact {
+        bodies: [Body::ball(true), Body::fixed()],
+        normal: -Vec3::y(),
+        arm: [-Vec3::y(), Vec3::zeros()],
+        mu: 0.14,
+        mu_cloth: 0.2,
+        e: 0.98,
+    };
+    let tol = 1e-9;
+    let measure = c.measure(tol, |y: &[f64; N]| c.local::<N, Free>(y).slip);
+    let mut err = [0.0; N];
+    err[0] = 5.0 * tol; // along x: changes the nose's and the cloth's slip
+    let mut large = [0.0; N];
+    large[0] = 1.0;
+    let mut small = [0.0; N];
+    small[0] = 1e-8;
+    assert!(measure.measure(&large, &large, &err) < 1.0);
+    assert!(measure.measure(&small, &small, &err) > 1.0);
+}
+
+#[test]
+fn errors_read_as_before() {
+    // The typed errors keep the messages the simulator reports.
+    let e = ImpactError::TooManyPhases { limit: 200 };
+    assert_eq!(
+        e.to_string(),
+        "impact could not be resolved: more than 200 phases"
+    );
+    let e = ImpactError::NotApproaching { normal_speed: -1.5 };
+    assert_eq!(
+        e.reason(),
+        "the bodies are not approaching (normal speed -1.5 m/s)"
+    );
+}
