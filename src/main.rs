@@ -42,11 +42,17 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(e) => {
-            // One line: clap's first (the error itself), with where to find the usage.
+            // One line: clap's message up to its first blank line (the usage and tips after
+            // it are left out), with where to find the usage.
             let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("invalid arguments");
-            let first = first.strip_prefix("error: ").unwrap_or(first);
-            return cmd::bad_input(format!("{first} (see `snooker --help`)"));
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            let message = message.join(" ");
+            let message = message.strip_prefix("error: ").unwrap_or(&message);
+            return cmd::bad_input(format!("{message} (see --help)"));
         }
     };
     match cli.command {

@@ -10,6 +10,7 @@ use crate::ball::{BallState, Motion};
 use crate::impact::MIN_SEPARATION;
 use crate::params::Params;
 use crate::sim::{Ending, EventKind, Setup, Shot};
+use std::cmp::Ordering;
 
 /// Largest overlap of two balls in play the engine promises at any instant, m (1 µm).
 pub const MAX_OVERLAP: f64 = 1e-6;
@@ -226,7 +227,12 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
     let r = p.ball_radius;
     let mut out = Vec::new();
     for w in shot.events.windows(2) {
-        if !(w[0].t <= w[1].t) {
+        // NaN times are out of order too.
+        let ordered = matches!(
+            w[0].t.partial_cmp(&w[1].t),
+            Some(Ordering::Less | Ordering::Equal)
+        );
+        if !ordered {
             out.push(Violation::EventsOutOfOrder {
                 first: w[0].t,
                 then: w[1].t,

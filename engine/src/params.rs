@@ -228,14 +228,14 @@ declare_params! {
     /// Tilt of the bed along x, rad (a ball feels g slope_x towards +x). Off (0) by default;
     /// the thesis's table is taken as level. See [`crate::motion::cloth`]. Its size, with
     /// `slope_y`'s, must stay below 7/5 `mu_roll` so that resting balls stay put.
-    slope_x: unit "rad", default 0.0, range ValidRange::closed(-0.05, 0.05),
+    slope_x: unit "rad", default 0.0, range ValidRange::closed(-0.1, 0.1),
         source "level bed assumed (thesis §2.4.2)";
     /// Tilt of the bed along y, rad. Off (0) by default.
-    slope_y: unit "rad", default 0.0, range ValidRange::closed(-0.05, 0.05),
+    slope_y: unit "rad", default 0.0, range ValidRange::closed(-0.1, 0.1),
         source "level bed assumed (thesis §2.4.2)";
     /// Sideways acceleration of the cloth's nap, m/s^2 ([`crate::motion::cloth::nap`]). Off
     /// (0) by default: the thesis found no nap effect (§5.1.1.1).
-    nap_drift: unit "m/s^2", default 0.0, range ValidRange::closed(-0.1, 0.1),
+    nap_drift: unit "m/s^2", default 0.0, range ValidRange::closed(-0.2, 0.2),
         source "Williams 2002 (thesis §5.1.1.1: not seen in its data)";
     /// Sliding friction at zero slip (Witters and Duymelinck: 0.14); equal to `mu_slide` (no
     /// speed dependence) by default, as the thesis measured none (§5.1.1.2). With a speed

@@ -52,8 +52,6 @@ pub struct Verdict {
     pub physical: bool,
     /// Why it fails the harness, if it does.
     pub failure: Option<String>,
-    /// Events simulated (first run).
-    pub events: usize,
 }
 
 fn sim_ending(e: &SimError) -> Ending {
@@ -111,17 +109,15 @@ pub fn check(g: &Generated) -> Verdict {
             ending: Ending::Panicked,
             physical: g.physical,
             failure: Some(format!("panic: {why}")),
-            events: 0,
         }
     })
 }
 
 fn check_inner(g: &Generated) -> Verdict {
-    let verdict = |ending, physical, failure: Option<String>, events| Verdict {
+    let verdict = |ending, physical, failure: Option<String>, _events: usize| Verdict {
         ending,
         physical,
         failure,
-        events,
     };
     let scene = match snooker_scene::parse(&g.text, "fuzz.toml") {
         Ok(s) => s,

@@ -140,7 +140,7 @@ impl Gen<'_> {
         }
         const COLOURS: [&str; 6] = ["yellow", "green", "brown", "blue", "pink", "black"];
         let n = self.scene.balls.len();
-        if n <= 6 && n % 2 == 0 {
+        if n <= 6 && n.is_multiple_of(2) {
             COLOURS[n / 2 - 1].to_string()
         } else {
             format!("red{n}")

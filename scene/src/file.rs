@@ -112,9 +112,9 @@ impl<'de> DeserializeSeed<'de> for ParamValue<'_> {
 
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
         let Some(info) = PARAMS.iter().find(|i| i.name == self.0) else {
-            let known: Vec<&str> = PARAMS.iter().map(|i| i.name).collect();
+            let known: Vec<String> = PARAMS.iter().map(|i| format!("`{}`", i.name)).collect();
             return Err(de::Error::custom(format!(
-                "unknown parameter `{}`, expected one of {}",
+                "unknown field `{}`, expected one of {}",
                 self.0,
                 known.join(", ")
             )));

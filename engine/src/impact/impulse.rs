@@ -56,7 +56,7 @@ mod problem;
 mod solve;
 
 pub use error::ImpactError;
-pub use problem::{Body, Contact, Kinematics, Outcome, Sample};
+pub use problem::{Impact, ImpactBody, Kinematics, Resolution, Sample};
 pub use solve::TOLERANCE;
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 
 use super::ball_ball::mathavan as bb;
 use super::cushion::mathavan as cush;
-use super::impulse::{Contact, Kinematics};
+use super::impulse::{Impact, Kinematics};
 use super::incoming;
 use crate::ball::Vec3;
 use crate::params::Params;
@@ -43,11 +43,11 @@ impl Rng {
 }
 
 /// One impact: what it is, its contact problem and velocities, and its speed V (m/s).
-pub struct Impact {
+pub struct RandomImpact {
     /// Speed, angle, spins and coefficients, for people.
     pub text: String,
     /// The Mathavan contact problem.
-    pub contact: Contact,
+    pub contact: Impact,
     /// Velocities before the impact.
     pub kin: Kinematics,
     /// The approach speed, m/s.
@@ -56,7 +56,7 @@ pub struct Impact {
 
 /// A random ball-ball impact (a cue ball moving along +x, a red at rest at the cut angle) or
 /// ball-cushion impact (a ball meeting the cushion along y = 0 at the incidence angle).
-pub fn random_impact(rng: &mut Rng, cushion: bool) -> Impact {
+pub fn random_impact(rng: &mut Rng, cushion: bool) -> RandomImpact {
     let [v, angle, k, m, mu, e, ms] = [
         (0.05, 6.0),
         (0.02, 1.45),
@@ -94,7 +94,7 @@ pub fn random_impact(rng: &mut Rng, cushion: bool) -> Impact {
         };
         (bb::contact(&cue, &red, &p), kin)
     };
-    Impact {
+    RandomImpact {
         text,
         contact,
         kin,
@@ -116,7 +116,7 @@ pub fn difference(a: &Kinematics, b: &Kinematics, scale: f64, r: f64) -> f64 {
 
 /// The impact solved at tolerance `tol`: its difference from the converged solution (a
 /// fraction of V) and the integration steps it took.
-pub fn convergence(impact: &Impact, tol: f64) -> (f64, usize) {
+pub fn convergence(impact: &RandomImpact, tol: f64) -> (f64, usize) {
     let p = Params::default();
     let (r, mass) = (p.ball_radius, p.ball_mass);
     let c = &impact.contact;

@@ -309,6 +309,32 @@ mod tests {
     use super::*;
     use snooker_engine::{Models, Params};
 
+    #[test]
+    fn every_fit_range_lies_within_the_parameters_declared_range() {
+        // A fit never leaves the values the engine accepts (snooker_engine::params::PARAMS),
+        // whatever the rolling resistance a tilt's range depends on.
+        for mu_roll in [0.0128, 0.1] {
+            let mut m = Model {
+                params: Params::default(),
+                models: Models::default(),
+            };
+            m.params.mu_roll = mu_roll;
+            for e in Effect::ALL {
+                for p in e.params(&m) {
+                    let info = Params::info(p.name).unwrap();
+                    assert!(
+                        info.range.contains(p.low) && info.range.contains(p.high),
+                        "{}: [{}, {}] outside {}",
+                        p.name,
+                        p.low,
+                        p.high,
+                        info.range
+                    );
+                }
+            }
+        }
+    }
+
     fn off() -> Model {
         let on = Model {
             params: Params::default(),

@@ -4,16 +4,16 @@
 //! energetic restitution e. Solved by [`crate::impact::impulse`].
 
 use crate::ball::BallState;
-use crate::impact::impulse::{Body, Contact, ImpactError, Kinematics, Outcome, Sample};
+use crate::impact::impulse::{Impact, ImpactBody, ImpactError, Kinematics, Resolution, Sample};
 use crate::motion::ON_CLOTH;
 use crate::params::Params;
 
 /// The contact problem of ball `a` striking ball `b` (touching).
-pub fn contact(a: &BallState, b: &BallState, p: &Params) -> Contact {
+pub fn contact(a: &BallState, b: &BallState, p: &Params) -> Impact {
     let n = (b.pos - a.pos).normalize();
     let on = |s: &BallState| s.pos.z <= p.ball_radius + ON_CLOTH;
-    Contact {
-        bodies: [Body::ball(on(a)), Body::ball(on(b))],
+    Impact {
+        bodies: [ImpactBody::ball(on(a)), ImpactBody::ball(on(b))],
         normal: n,
         arm: [n, -n],
         mu: p.mu_ball,
@@ -28,7 +28,7 @@ pub fn solve(
     b: &BallState,
     p: &Params,
     trace: Option<&mut Vec<Sample>>,
-) -> Result<Outcome, ImpactError> {
+) -> Result<Resolution, ImpactError> {
     let k = Kinematics {
         vel: [a.vel, b.vel],
         spin: [a.spin, b.spin],

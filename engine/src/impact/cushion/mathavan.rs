@@ -6,21 +6,21 @@
 //! Solved by [`crate::impact::impulse`] with the cushion as an immovable body.
 
 use crate::ball::{BallState, Vec3};
-use crate::impact::impulse::{Body, Contact, ImpactError, Kinematics, Outcome, Sample};
+use crate::impact::impulse::{Impact, ImpactBody, ImpactError, Kinematics, Resolution, Sample};
 use crate::motion::ON_CLOTH;
 use crate::params::Params;
 
 /// The contact problem of `ball` hitting a cushion (or jaw) whose plan normal, pointing from
 /// the cushion to the ball, is `normal`.
-pub fn contact(ball: &BallState, normal: Vec3, p: &Params) -> Contact {
+pub fn contact(ball: &BallState, normal: Vec3, p: &Params) -> Impact {
     let sin = p.cushion_sin_theta();
     let cos = (1.0 - sin * sin).sqrt();
     // From the ball's centre towards the nose: into the cushion and up.
     let n = -cos * normal + sin * Vec3::z();
-    Contact {
+    Impact {
         bodies: [
-            Body::ball(ball.pos.z <= p.ball_radius + ON_CLOTH),
-            Body::fixed(),
+            ImpactBody::ball(ball.pos.z <= p.ball_radius + ON_CLOTH),
+            ImpactBody::fixed(),
         ],
         normal: n,
         arm: [n, Vec3::zeros()],
@@ -36,7 +36,7 @@ pub fn solve(
     normal: Vec3,
     p: &Params,
     trace: Option<&mut Vec<Sample>>,
-) -> Result<Outcome, ImpactError> {
+) -> Result<Resolution, ImpactError> {
     let k = Kinematics {
         vel: [ball.vel, Vec3::zeros()],
         spin: [ball.spin, Vec3::zeros()],

@@ -9,7 +9,7 @@
 use super::laws::{Forces, Held, Local, NONE_HELD};
 use super::mode::{Friction, Mode, PRIMARY};
 use super::pair::Pair;
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 
 /// Solves the small dense system `a x = b` (n <= 6) by Gaussian elimination with partial
@@ -50,7 +50,7 @@ fn unit_or(v: Vec3, fallback: Vec3) -> Vec3 {
     if n > 0.0 { v / n } else { fallback }
 }
 
-impl Contact {
+impl Impact {
     /// Two unit vectors spanning contact `k`'s tangent plane.
     fn tangents(&self, k: usize) -> [Vec3; 2] {
         if k == PRIMARY {
@@ -105,7 +105,7 @@ impl Contact {
     /// zero, the other frictions in `held` fixed. The rates are affine in these frictions, so
     /// this is one small linear solve. For a single contact, also returns its rates at zero
     /// friction and their change per unit friction along each tangent (what
-    /// [`Contact::creep`] needs, so that it need not probe them again).
+    /// [`Impact::creep`] needs, so that it need not probe them again).
     fn hold<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],
@@ -280,7 +280,7 @@ impl Contact {
         (held, creeping)
     }
 
-    /// All forces under `mode` (contacts at zero slip by [`Contact::at_zero`]).
+    /// All forces under `mode` (contacts at zero slip by [`Impact::at_zero`]).
     pub(super) fn forces<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],

@@ -23,7 +23,7 @@ pub enum ImpactError {
     UnboundedImpulse,
     /// A phase stopped advancing with its zero-slip band already at its widest.
     DidNotConverge,
-    /// The thesis's Euler scheme ([`super::Contact::euler`]) took all its steps without
+    /// The thesis's Euler scheme ([`super::Impact::euler`]) took all its steps without
     /// finishing the restitution.
     EulerDidNotFinish,
 }

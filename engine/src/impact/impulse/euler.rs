@@ -4,9 +4,9 @@ use super::error::ImpactError;
 use super::laws::NONE_HELD;
 use super::mode::{Friction, Mode};
 use super::pair::{Free, N, WORK};
-use super::problem::{Contact, Kinematics};
+use super::problem::{Impact, Kinematics};
 
-impl Contact {
+impl Impact {
     /// The thesis's scheme: forward Euler in P with `steps` equal increments of the
     /// frictionless impulse, friction against the slip of the step's start, compression and
     /// restitution work by the trapezoidal rule (eq. 6.16). First order: its error falls as

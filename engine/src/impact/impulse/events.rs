@@ -7,7 +7,7 @@ use super::laws::NONE_HELD;
 use super::mode::{CLOTH, ESTABLISHED_PER_ZERO, Friction, PRIMARY};
 use super::pair::Pair;
 use super::phase::PhaseLaws;
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 use crate::impact::dopri::Events;
 
@@ -118,7 +118,7 @@ impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'_, M, P, AT_ZER
             Event::Slip(PRIMARY) => slip_event(mode.friction[PRIMARY], slip(), mode.zero),
             Event::Slip(k) => slip_event(
                 mode.friction[k],
-                Contact::cloth_slip::<M, P>(y, k - CLOTH[0]),
+                Impact::cloth_slip::<M, P>(y, k - CLOTH[0]),
                 mode.zero,
             ),
             Event::Support(i) if c.bodies[i].on_cloth => support_event(P::vel(y, i).z, || {
@@ -146,7 +146,7 @@ impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> Events<M, K>
         g[Event::Slip(PRIMARY).index()] = slip_event(mode.friction[PRIMARY], slip, mode.zero);
         for (i, &k) in CLOTH.iter().enumerate() {
             if !matches!(mode.friction[k], Friction::Off) {
-                let s = Contact::cloth_slip::<M, P>(y, i);
+                let s = Impact::cloth_slip::<M, P>(y, i);
                 g[Event::Slip(k).index()] = slip_event(mode.friction[k], s, mode.zero);
             }
         }

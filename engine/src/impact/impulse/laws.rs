@@ -5,7 +5,7 @@
 
 use super::mode::{CLOTH, Mode, PRIMARY, friction};
 use super::pair::{Pair, moving_bodies};
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 
 /// Velocities at the contacts in one state.
@@ -35,7 +35,7 @@ pub(super) type Held = [Vec3; 3];
 /// No contact at zero slip.
 pub(super) const NONE_HELD: Held = [Vec3::new(0.0, 0.0, 0.0); 3];
 
-impl Contact {
+impl Impact {
     /// Velocity of body 0's contact point relative to body 1's, and its normal part
     /// (positive approaching). A fixed body's contact point is at rest.
     #[inline(always)]

@@ -2,7 +2,7 @@
 //! direction (docs/impact-convergence.md).
 
 use super::pair::N;
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 use crate::impact::dopri::{self, ErrorMeasure};
 
@@ -41,7 +41,7 @@ impl<const M: usize, S: Fn(&[f64; M]) -> [Vec3; 3]> ErrorMeasure<M> for SlipAwar
     }
 }
 
-impl Contact {
+impl Impact {
     /// The error measure, to tolerance `tol`, of a step of a state whose slips are `slips`
     /// (linear in the state, so that they also give an error's slips).
     pub(super) fn measure<S>(&self, tol: f64, slips: S) -> SlipAware<S> {

@@ -8,7 +8,7 @@
 
 use super::laws::NONE_HELD;
 use super::pair::Pair;
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 
 /// A creeping slip growing faster than this (fraction of V per unit impulse M V) is robust:
@@ -33,7 +33,7 @@ pub(super) enum Friction {
     /// Slipping: friction mu N against the slip; the slip's direction when the phase began.
     Slip(Vec3),
     /// At zero slip: holding, or creeping out of zero, as Coulomb's law decides at every
-    /// instant ([`Contact::at_zero`]).
+    /// instant ([`Impact::at_zero`]).
     AtZero,
     /// Creeping robustly out of zero: friction mu N against this (consistent) direction until
     /// the slip is established; the direction cannot change in that instant.
@@ -89,7 +89,7 @@ pub(super) fn friction(
     }
 }
 
-impl Contact {
+impl Impact {
     /// The mode at state `y`: a contact slips if its slip is measurable, otherwise it is at
     /// zero (holding or creeping, decided continuously), or has no friction at all.
     pub(super) fn mode_at<const M: usize, P: Pair<M>>(

@@ -7,7 +7,7 @@ use super::events::K;
 use super::laws::{Held, NONE_HELD};
 use super::mode::Mode;
 use super::pair::Pair;
-use super::problem::Contact;
+use super::problem::Impact;
 use crate::ball::Vec3;
 use crate::impact::dopri::{self, ErrorMeasure, Events, Stop};
 use std::marker::PhantomData;
@@ -22,7 +22,7 @@ pub(super) const CRAWL_STEPS: usize = 5000;
 /// evaluation; without one, the slopes are those of the slips' laws alone.
 pub(super) struct PhaseLaws<'a, const M: usize, P: Pair<M>, const AT_ZERO: bool> {
     /// The impact.
-    pub contact: &'a Contact,
+    pub contact: &'a Impact,
     /// The phase's mode.
     pub mode: &'a Mode,
     pair: PhantomData<P>,
@@ -31,7 +31,7 @@ pub(super) struct PhaseLaws<'a, const M: usize, P: Pair<M>, const AT_ZERO: bool>
 impl<'a, const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'a, M, P, AT_ZERO> {
     /// The laws of `contact` under `mode`; `AT_ZERO` must say whether `mode` has a contact
     /// at zero slip.
-    pub fn new(contact: &'a Contact, mode: &'a Mode) -> Self {
+    pub fn new(contact: &'a Impact, mode: &'a Mode) -> Self {
         debug_assert_eq!(AT_ZERO, mode.any_at_zero());
         PhaseLaws {
             contact,
@@ -113,7 +113,7 @@ impl Run<'_> {
     }
 }
 
-impl Contact {
+impl Impact {
     /// Integrates one phase under `mode` from impulse `p`, state `y` (of pair `P`), first step
     /// `h`, to tolerance `tol`, until an event (or a crawl); `on_step` sees every accepted
     /// point. `establish` allows Heun's step for a starting slip.

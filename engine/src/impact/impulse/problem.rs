@@ -5,7 +5,7 @@ use crate::ball::{INV_INERTIA_FACTOR, Vec3};
 
 /// One body of an impact.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Body {
+pub struct ImpactBody {
     /// M / mass (1 for a ball, 0 for a fixed cushion).
     pub inv_mass: f64,
     /// M R^2 / moment of inertia (5/2 for a solid ball, 0 for a fixed cushion).
@@ -14,10 +14,10 @@ pub struct Body {
     pub on_cloth: bool,
 }
 
-impl Body {
+impl ImpactBody {
     /// A solid ball of the reference mass and radius.
-    pub fn ball(on_cloth: bool) -> Body {
-        Body {
+    pub fn ball(on_cloth: bool) -> ImpactBody {
+        ImpactBody {
             inv_mass: 1.0,
             inv_inertia: INV_INERTIA_FACTOR,
             on_cloth,
@@ -25,8 +25,8 @@ impl Body {
     }
 
     /// An immovable body (the cushion).
-    pub fn fixed() -> Body {
-        Body {
+    pub fn fixed() -> ImpactBody {
+        ImpactBody {
             inv_mass: 0.0,
             inv_inertia: 0.0,
             on_cloth: false,
@@ -41,9 +41,9 @@ impl Body {
 
 /// The geometry and coefficients of an impact.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Contact {
+pub struct Impact {
     /// The two bodies.
-    pub bodies: [Body; 2],
+    pub bodies: [ImpactBody; 2],
     /// Unit normal at the primary contact, from body 0 towards body 1.
     pub normal: Vec3,
     /// The primary contact point relative to each body's centre, in units of R.
@@ -67,7 +67,7 @@ pub struct Kinematics {
 
 /// What the impact did.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Outcome {
+pub struct Resolution {
     /// Velocities just after the impact.
     pub after: Kinematics,
     /// Total normal impulse, N s.

@@ -8,7 +8,7 @@ use super::events::Event;
 use super::laws::Local;
 use super::mode::{Mode, PRIMARY};
 use super::pair::{FIXED_DIM, Fixed, Free, N, Pair, moving_bodies};
-use super::problem::{Contact, Kinematics, Outcome, Sample};
+use super::problem::{Impact, Kinematics, Resolution, Sample};
 use crate::ball::Vec3;
 use crate::impact::dopri::Stop;
 
@@ -56,7 +56,7 @@ impl Paths {
 /// Where an impact's samples go, and the scales that make them dimensional.
 struct Recorder<'a, 'b> {
     trace: Option<&'a mut Vec<Sample>>,
-    contact: &'b Contact,
+    contact: &'b Impact,
     v_scale: f64,
     mass: f64,
 }
@@ -76,7 +76,7 @@ impl Recorder<'_, '_> {
             slip: loc.slip[PRIMARY] * v_scale,
             cloth_slip: [0, 1].map(|i| {
                 if c.bodies[i].on_cloth {
-                    Contact::cloth_slip::<N, Free>(y, i) * v_scale
+                    Impact::cloth_slip::<N, Free>(y, i) * v_scale
                 } else {
                     Vec3::zeros()
                 }
@@ -87,7 +87,7 @@ impl Recorder<'_, '_> {
     }
 }
 
-impl Contact {
+impl Impact {
     /// The state vector in scaled units, and the velocity scale (the approach speed).
     pub(super) fn scaled(
         &self,
@@ -131,11 +131,11 @@ impl Contact {
         radius: f64,
         mass: f64,
         trace: Option<&mut Vec<Sample>>,
-    ) -> Result<Outcome, ImpactError> {
+    ) -> Result<Resolution, ImpactError> {
         self.solve_to(k, radius, mass, TOLERANCE, trace)
     }
 
-    /// [`Contact::solve`] to a given tolerance `tol` (scaled units, as [`TOLERANCE`]: the
+    /// [`Impact::solve`] to a given tolerance `tol` (scaled units, as [`TOLERANCE`]: the
     /// slips' near zero, the velocities' 30 times larger; the zero band scales with it).
     pub fn solve_to(
         &self,
@@ -144,11 +144,11 @@ impl Contact {
         mass: f64,
         tol: f64,
         trace: Option<&mut Vec<Sample>>,
-    ) -> Result<Outcome, ImpactError> {
+    ) -> Result<Resolution, ImpactError> {
         self.solve_with(k, radius, mass, tol, trace, Paths::FAST)
     }
 
-    /// [`Contact::solve_to`], taking the faster `paths` given.
+    /// [`Impact::solve_to`], taking the faster `paths` given.
     pub(super) fn solve_with(
         &self,
         k: &Kinematics,
@@ -157,7 +157,7 @@ impl Contact {
         tol: f64,
         trace: Option<&mut Vec<Sample>>,
         paths: Paths,
-    ) -> Result<Outcome, ImpactError> {
+    ) -> Result<Resolution, ImpactError> {
         if !(0.0..).contains(&self.e) || !self.e.is_finite() {
             return Err(ImpactError::RestitutionOutOfRange { e: self.e });
         }
@@ -187,7 +187,7 @@ impl Contact {
         } else {
             self.phases::<N, Free>(y, tol, paths, &mut recorder)?
         };
-        Ok(Outcome {
+        Ok(Resolution {
             after: self.unscaled(&y, v_scale, radius),
             impulse: outcome.impulse * mass * v_scale,
             compression_impulse: outcome.compression_impulse * mass * v_scale,
@@ -204,7 +204,7 @@ impl Contact {
         tol: f64,
         paths: Paths,
         recorder: &mut Recorder<'_, '_>,
-    ) -> Result<([f64; M], Outcome), ImpactError> {
+    ) -> Result<([f64; M], Resolution), ImpactError> {
         let inv_sum: f64 = self.bodies.iter().map(|b| b.inv_mass).sum();
         // About (1 + e) / (1/m0 + 1/m1) in scaled units: the frictionless impulse.
         let p_guess = (1.0 + self.e) / inv_sum.max(1e-12);
@@ -277,7 +277,7 @@ impl Contact {
                 }
             }
         }
-        let outcome = Outcome {
+        let outcome = Resolution {
             after: Kinematics {
                 vel: [Vec3::zeros(); 2],
                 spin: [Vec3::zeros(); 2],

@@ -15,7 +15,7 @@ const MASS: f64 = 0.141;
 
 /// A ball-ball or ball-cushion contact (as the Mathavan models set them up) and random
 /// velocities that approach, with frictions up to 0.6.
-fn random_impact(rng: &mut Rng, cushion: bool) -> (Contact, Kinematics) {
+fn random_impact(rng: &mut Rng, cushion: bool) -> (Impact, Kinematics) {
     let (mu, mu_cloth, e) = (
         rng.uniform(0.0, 0.6),
         rng.uniform(0.0, 0.6),
@@ -27,11 +27,19 @@ fn random_impact(rng: &mut Rng, cushion: bool) -> (Contact, Kinematics) {
     let lifted = rng.uniform(0.0, 1.0) < 0.1;
     let (bodies, normal, arm) = if cushion {
         let n = -(21f64.sqrt() / 5.0) * plan + 0.4 * Vec3::z();
-        ([Body::ball(!lifted), Body::fixed()], n, [n, Vec3::zeros()])
+        (
+            [ImpactBody::ball(!lifted), ImpactBody::fixed()],
+            n,
+            [n, Vec3::zeros()],
+        )
     } else {
-        ([Body::ball(!lifted), Body::ball(true)], plan, [plan, -plan])
+        (
+            [ImpactBody::ball(!lifted), ImpactBody::ball(true)],
+            plan,
+            [plan, -plan],
+        )
     };
-    let c = Contact {
+    let c = Impact {
         bodies,
         normal,
         arm,
@@ -81,7 +89,7 @@ fn random_mode(rng: &mut Rng) -> Mode {
 
 /// A random whole state of `c`, a fixed body's entries zero, balls on the cloth down (held)
 /// or up (free).
-fn random_state(rng: &mut Rng, c: &Contact) -> [f64; N] {
+fn random_state(rng: &mut Rng, c: &Impact) -> [f64; N] {
     let mut y = [0.0; N];
     for i in 0..2 {
         if !c.bodies[i].is_fixed() {
@@ -254,8 +262,8 @@ fn heuns_step_establishes_a_slip_as_the_full_integration_does() {
 fn slips_are_measured_relative_to_their_size() {
     // The same error in a slip: accepted on a large slip, rejected on one near zero,
     // where it would turn the friction's direction.
-    let c = Contact {
-        bodies: [Body::ball(true), Body::fixed()],
+    let c = Impact {
+        bodies: [ImpactBody::ball(true), ImpactBody::fixed()],
         normal: -Vec3::y(),
         arm: [-Vec3::y(), Vec3::zeros()],
         mu: 0.14,
