@@ -28,6 +28,9 @@ pub enum Motion {
     Airborne,
     /// Fallen into a pocket; out of play.
     Pocketed,
+    /// Flown over a cushion and off the table; out of play (WPBSA rules: a ball forced off
+    /// the table).
+    OffTable,
 }
 
 impl Motion {
@@ -40,6 +43,7 @@ impl Motion {
             Motion::Rolling => "rolling",
             Motion::Airborne => "airborne",
             Motion::Pocketed => "pocketed",
+            Motion::OffTable => "off_table",
         }
     }
 
@@ -48,9 +52,9 @@ impl Motion {
         matches!(self, Motion::Sliding | Motion::Rolling | Motion::Airborne)
     }
 
-    /// True while the ball is on the table (not pocketed).
+    /// True while the ball is on the table (not pocketed, not off the table).
     pub fn in_play(self) -> bool {
-        self != Motion::Pocketed
+        !matches!(self, Motion::Pocketed | Motion::OffTable)
     }
 }
 
@@ -157,7 +161,7 @@ impl BallState {
 
     /// Translational plus rotational kinetic energy, J, plus potential energy above the cloth level.
     pub fn energy(&self, mass: f64, inertia: f64, radius: f64, g: f64) -> f64 {
-        if self.motion == Motion::Pocketed {
+        if !self.motion.in_play() {
             return 0.0;
         }
         0.5 * mass * self.vel.norm_squared()

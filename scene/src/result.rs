@@ -66,12 +66,19 @@ pub fn result_json(scene: &Scene, shot: &Shot) -> Value {
         .filter(|e| e.kind == EventKind::BallPocket)
         .map(|e| json!({"ball": ids[e.balls[0]], "pocket": e.feature, "t": e.t}))
         .collect();
+    let off_table: Vec<Value> = shot
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallOffTable)
+        .map(|e| json!({"ball": ids[e.balls[0]], "cushion": e.feature, "t": e.t}))
+        .collect();
     let mut doc = Map::new();
     doc.insert("scene".into(), json!(scene.name));
     doc.insert("events".into(), Value::Array(events));
     doc.insert("final".into(), Value::Object(fin));
     doc.insert("duration".into(), json!(shot.duration));
     doc.insert("pots".into(), Value::Array(pots));
+    doc.insert("off_table".into(), Value::Array(off_table));
     doc.insert(
         "models".into(),
         json!({
@@ -174,6 +181,22 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
             pots.join("; ")
         }
     );
+    let off: Vec<String> = shot
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallOffTable)
+        .map(|e| {
+            format!(
+                "{} over {} at {:.3} s",
+                ids[e.balls[0]],
+                e.feature.as_deref().unwrap_or("?"),
+                e.t
+            )
+        })
+        .collect();
+    if !off.is_empty() {
+        let _ = writeln!(out, "off the table: {}", off.join("; "));
+    }
     let _ = writeln!(out, "final positions (x, y in m):");
     for (id, s) in ids.iter().zip(shot.final_states()) {
         let _ = writeln!(

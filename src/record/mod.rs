@@ -98,16 +98,18 @@ pub fn motion_color(m: Motion) -> [u8; 3] {
         Motion::Airborne => [0, 230, 230],
         Motion::Stationary => [150, 150, 150],
         Motion::Pocketed => [60, 60, 60],
+        Motion::OffTable => [110, 60, 30],
     }
 }
 
-const MOTIONS: [Motion; 6] = [
+const MOTIONS: [Motion; 7] = [
     Motion::Sliding,
     Motion::Rolling,
     Motion::Spinning,
     Motion::Airborne,
     Motion::Stationary,
     Motion::Pocketed,
+    Motion::OffTable,
 ];
 
 /// Entity path `root/part` with `part` escaped (ball ids are free text).
@@ -517,7 +519,7 @@ impl Ball<'_> {
             .states
             .iter()
             .map(|s| match s.motion {
-                Motion::Pocketed | Motion::Airborne => f64::NAN,
+                Motion::Pocketed | Motion::OffTable | Motion::Airborne => f64::NAN,
                 _ => s.slip(r).norm(),
             })
             .collect();

@@ -1,12 +1,79 @@
-//! Ball-cushion contact. The nose touches the ball at height h (7R/5), so a ball touches a
-//! straight nose when its centre is R cos(theta) from the nose line in plan (thesis §6.2),
-//! and a jaw arc of radius r_j when its centre is r_j + R cos(theta) from the arc's centre.
-//! Airborne balls are tested in plan with the same distance (their hop is a few mm).
+//! Ball-cushion contact. The nose is an edge at height h (7R/5) above the cloth: a ball touches
+//! it when its centre is R from the edge. On the cloth (centre at height R) that is R cos(theta)
+//! from the nose line in plan (thesis §6.2), and r_j + R cos(theta) from a jaw arc's centre.
+//! A ball in the air touches the edge wherever its centre passes within R of it: from below
+//! the nose's height or above it (a ball dropping onto a cushion, thesis §6.1.6's hop meeting
+//! one). A ball whose lowest point is above the nose when its centre crosses the nose line
+//! clears the cushion and leaves the table.
 
-use super::TOUCH_TOL;
-use super::roots::{first_entry, first_line_contact};
+use super::roots::{entries, first_entry, first_line_contact, ring_entries};
+use super::{TOUCH_TOL, VERIFY_TOL};
 use crate::motion::Path;
 use crate::table::{Cushion, Jaw};
+
+/// The height of the nose edges above the cloth and the ball radius: what a ball in the air
+/// meets.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NoseEdge {
+    /// Height of the nose above the cloth, m.
+    pub height: f64,
+    /// Ball radius, m.
+    pub radius: f64,
+}
+
+/// True when the plan point `at` lies along `cushion` (within its length).
+fn along(cushion: &Cushion, at: crate::ball::Vec3) -> bool {
+    let s = (at - cushion.start).dot(&cushion.direction());
+    s >= -TOUCH_TOL && s <= cushion.length() + TOUCH_TOL
+}
+
+/// First time in [0, window] at which a ball in the air on `path` touches the nose edge of the
+/// straight `cushion`, approaching it, from the table's side and within the cushion's length.
+/// In the vertical plane across the nose, the centre's (plan distance, height above the nose)
+/// enters the circle of radius R around the edge.
+pub fn nose_time_in_air(
+    path: &Path,
+    cushion: &Cushion,
+    edge: NoseEdge,
+    window: f64,
+) -> Option<f64> {
+    let n = cushion.normal;
+    let across = |v: crate::ball::Vec3, z: f64| crate::ball::Vec3::new(n.dot(&v), z, 0.0);
+    let rel = Path {
+        c: across(path.c - cushion.start, path.c.z - edge.height),
+        b: across(path.b, path.b.z),
+        a: across(path.a, path.a.z),
+    };
+    entries(&rel, edge.radius, window).find(|&t| {
+        let at = path.at(t);
+        n.dot(&(at - cushion.start)) > 0.0 && along(cushion, at)
+    })
+}
+
+/// First time in [0, window] at which a ball in the air on `path` passes over the nose line
+/// of `cushion` (within its length) with its lowest point above the nose: it clears the
+/// cushion and leaves the table.
+pub fn over_time(path: &Path, cushion: &Cushion, edge: NoseEdge, window: f64) -> Option<f64> {
+    let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, 0.0, window)?;
+    let clear = path.at(t).z - edge.radius >= edge.height - VERIFY_TOL;
+    (clear && along(cushion, at)).then_some(t)
+}
+
+/// First time in [0, window] at which a ball in the air on `path` touches the rounded edge of
+/// the `jaw` (a ring of the jaw's radius at the nose's height), approaching it.
+pub fn jaw_time_in_air(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> Option<f64> {
+    let mut rel = path.plan();
+    rel.c -= jaw.centre;
+    let dz = [path.c.z - edge.height, path.b.z, path.a.z];
+    if jaw.radius > 0.0 {
+        ring_entries(&rel, dz, jaw.radius, edge.radius, window).next()
+    } else {
+        // A sharp jaw: a point at the nose's height.
+        let mut point = *path;
+        point.c -= jaw.centre + crate::ball::Vec3::new(0.0, 0.0, edge.height);
+        first_entry(&point, edge.radius, window)
+    }
+}
 
 /// First time in [0, window] at which `path` touches the straight `cushion` within its
 /// length, approaching it; `contact` is R cos(theta).

@@ -21,31 +21,109 @@ pub const MAX_WINDOW: f64 = 1e6;
 /// `rho` (less the [`SKIN`]) around the origin while approaching it. A path already touching
 /// (within [`TOUCH_TOL`]) and approaching gives 0; one touching and at rest or separating does not.
 pub fn first_entry(rel: &Path, rho: f64, window: f64) -> Option<f64> {
+    entries(rel, rho, window).next()
+}
+
+/// Every time in [0, window], in order, at which the relative path `rel` enters the sphere of
+/// radius `rho` while approaching it, as [`first_entry`] finds the first.
+pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
     let (a, b, c) = (rel.a, rel.b, rel.c);
     let dist0 = c.norm();
-    if dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0 {
-        return Some(0.0);
-    }
+    let now = dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0;
     let rho = rho - SKIN;
-    if window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window) {
-        return None;
-    }
-    let quartic = Poly::new([
-        c.dot(&c) - rho * rho,
-        2.0 * b.dot(&c),
-        b.dot(&b) + 2.0 * a.dot(&c),
-        2.0 * a.dot(&b),
-        a.dot(&a),
-    ]);
-    // A law that never ends (no friction) is searched over a bounded, still astronomical, span.
-    let window = window.min(MAX_WINDOW);
-    quartic
-        .roots_between(0.0, window, ROOT_TIME_TOL)
-        .into_iter()
-        .find(|&t| {
-            let d = rel.at(t);
-            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
-        })
+    let searched = !now && !(window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window));
+    let roots = if searched {
+        let quartic = Poly::new([
+            c.dot(&c) - rho * rho,
+            2.0 * b.dot(&c),
+            b.dot(&b) + 2.0 * a.dot(&c),
+            2.0 * a.dot(&b),
+            a.dot(&a),
+        ]);
+        // A law that never ends (no friction) is searched over a bounded, still astronomical,
+        // span.
+        quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+    } else {
+        Default::default()
+    };
+    now.then_some(0.0).into_iter().chain(roots.into_iter().filter(move |&t| {
+        let d = rel.at(t);
+        d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+    }))
+}
+
+/// Every time in [0, window], in order, at which a point on the path `plan` (relative to a
+/// ring's centre, in plan) at height `dz` above the ring's plane (a quadratic in time, given
+/// as its value, rate and half acceleration) comes within `rho` (less the [`SKIN`]) of the
+/// ring of radius `ring` while approaching it: the ball touching the rounded edge of a jaw.
+/// With d the plan distance from the axis, (d - ring)^2 + dz^2 = rho^2 squares to an
+/// octic in time; its roots are verified against the distance itself.
+pub fn ring_entries(
+    plan: &Path,
+    dz: [f64; 3],
+    ring: f64,
+    rho: f64,
+    window: f64,
+) -> impl Iterator<Item = f64> + '_ {
+    let distance = move |t: f64| {
+        let p = plan.at(t);
+        let h = dz[0] + (dz[1] + dz[2] * t) * t;
+        let d = Vec3::new(p.x, p.y, 0.0).norm();
+        ((d - ring).hypot(h), d, h, p)
+    };
+    let approaching = move |t: f64| {
+        let (_, d, h, p) = distance(t);
+        let v = plan.velocity(t);
+        let dd = if d > 0.0 { (p.x * v.x + p.y * v.y) / d } else { 0.0 };
+        (d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t) < 0.0
+    };
+    let now = distance(0.0).0 <= rho + TOUCH_TOL && approaching(0.0);
+    let rho = rho - SKIN;
+    let searched = !now && window.is_finite() && window > 0.0;
+    let roots = if searched {
+        // d^2 = |plan|^2 (quartic) and h^2 (quartic), as coefficient arrays.
+        let (a, b, c) = (plan.a, plan.b, plan.c);
+        let flat = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
+        let (a, b, c) = (flat(a), flat(b), flat(c));
+        let d2 = [
+            c.dot(&c),
+            2.0 * b.dot(&c),
+            b.dot(&b) + 2.0 * a.dot(&c),
+            2.0 * a.dot(&b),
+            a.dot(&a),
+        ];
+        let h2 = [
+            dz[0] * dz[0],
+            2.0 * dz[0] * dz[1],
+            dz[1] * dz[1] + 2.0 * dz[0] * dz[2],
+            2.0 * dz[1] * dz[2],
+            dz[2] * dz[2],
+        ];
+        // A = d^2 + ring^2 - rho^2 + h^2; the contact is 2 ring d = A, squared A^2 = 4 ring^2 d^2.
+        let mut big_a = [0.0; 5];
+        for k in 0..5 {
+            big_a[k] = d2[k] + h2[k];
+        }
+        big_a[0] += ring * ring - rho * rho;
+        let mut octic = [0.0; 9];
+        for i in 0..5 {
+            for j in 0..5 {
+                octic[i + j] += big_a[i] * big_a[j];
+            }
+            octic[i] -= 4.0 * ring * ring * d2[i];
+        }
+        Poly::new(octic)
+            .roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+            .into_iter()
+            .collect::<Vec<f64>>()
+    } else {
+        Vec::new()
+    };
+    now.then_some(0.0).into_iter().chain(
+        roots
+            .into_iter()
+            .filter(move |&t| approaching(t) && (distance(t).0 - rho).abs() <= VERIFY_TOL),
+    )
 }
 
 /// The first time in [0, window] at which `path` comes within `dist` of the line through

@@ -116,7 +116,7 @@ pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
         Motion::Rolling => rolling::state_at(s, dt, p),
         Motion::Spinning => spinning::state_at(s, dt, p),
         Motion::Airborne => airborne::state_at(s, dt, p),
-        Motion::Stationary | Motion::Pocketed => *s,
+        Motion::Stationary | Motion::Pocketed | Motion::OffTable => *s,
     }
 }
 
@@ -127,7 +127,7 @@ pub fn duration(s: &BallState, p: &Params) -> f64 {
         Motion::Rolling => rolling::duration(s, p),
         Motion::Spinning => spinning::duration(s, p),
         Motion::Airborne => airborne::duration(s, p),
-        Motion::Stationary | Motion::Pocketed => f64::INFINITY,
+        Motion::Stationary | Motion::Pocketed | Motion::OffTable => f64::INFINITY,
     }
 }
 
@@ -137,7 +137,9 @@ pub fn path(s: &BallState, p: &Params) -> Path {
         Motion::Sliding => sliding::acceleration(s, p),
         Motion::Rolling => rolling::acceleration(s, p),
         Motion::Airborne => airborne::acceleration(p),
-        Motion::Spinning | Motion::Stationary | Motion::Pocketed => Vec3::zeros(),
+        Motion::Spinning | Motion::Stationary | Motion::Pocketed | Motion::OffTable => {
+            Vec3::zeros()
+        }
     };
     let vel = if s.motion.is_moving() {
         s.vel
@@ -212,7 +214,7 @@ pub fn finish(start: &BallState, end: &BallState, p: &Params) -> Option<(Transit
             s = settle_on_cloth(s, p);
             Transition::Landing
         }
-        Motion::Stationary | Motion::Pocketed => return None,
+        Motion::Stationary | Motion::Pocketed | Motion::OffTable => return None,
     };
     Some((kind, s))
 }
@@ -250,7 +252,7 @@ pub fn settle_on_cloth(mut s: BallState, p: &Params) -> BallState {
 /// Assigns the law for any ball in play: airborne if it is above the cloth or rising,
 /// otherwise as [`settle_on_cloth`] (a downward velocity on the cloth is stopped by the cloth).
 pub fn settle(s: BallState, p: &Params) -> BallState {
-    if s.motion == Motion::Pocketed {
+    if !s.motion.in_play() {
         return s;
     }
     let above = s.pos.z - p.ball_radius > ON_CLOTH;

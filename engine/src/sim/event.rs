@@ -14,6 +14,8 @@ pub enum EventKind {
     BallCushion,
     /// A ball dropped into a pocket.
     BallPocket,
+    /// A ball flew over a cushion and left the table.
+    BallOffTable,
     /// A ball's motion law changed on its own.
     Transition(Transition),
 }
@@ -25,6 +27,7 @@ impl EventKind {
             EventKind::BallBall => "ball_ball",
             EventKind::BallCushion => "ball_cushion",
             EventKind::BallPocket => "ball_pocket",
+            EventKind::BallOffTable => "ball_off_table",
             EventKind::Transition(t) => t.name(),
         }
     }

@@ -14,7 +14,9 @@ pub mod setup;
 pub mod shot;
 
 use crate::ball::{BallState, Motion, Vec3};
-use crate::detect;
+use crate::detect::{self, cushion, cushion::NoseEdge};
+use crate::impact::{CushionContact, separation};
+use crate::table::{Cushion, Jaw};
 use crate::motion;
 use crate::params::Params;
 pub use error::SimError;
@@ -23,16 +25,26 @@ use queue::{Candidate, Entry, Queue};
 pub use setup::{Setup, SetupError, SimOptions};
 pub use shot::{Ending, Segment, Shot, Stats, Track};
 
-/// What resolving a candidate gives: the event's kind, the balls involved, their states
-/// before and after, the feature involved and the normal approach speed.
-type Resolved = (
-    EventKind,
-    Vec<usize>,
-    Vec<BallState>,
-    Vec<BallState>,
-    Option<String>,
-    Option<f64>,
-);
+/// A cushion's nose edge a ball touches: a straight nose (or facing), or a jaw's arc.
+#[derive(Clone, Copy)]
+enum NoseLine<'a> {
+    Straight(&'a Cushion),
+    Jaw(&'a Jaw),
+}
+
+/// What resolving a candidate gave: the event, before its states are installed.
+struct Resolved {
+    kind: EventKind,
+    /// The balls involved.
+    balls: Vec<usize>,
+    /// Their states just before and just after.
+    before: Vec<BallState>,
+    after: Vec<BallState>,
+    /// The cushion, jaw or pocket involved, by name.
+    feature: Option<String>,
+    /// For impacts: the approach speed along the contact normal, m/s.
+    normal_speed: Option<f64>,
+}
 
 struct Live {
     /// State at `t_ref`.
@@ -156,17 +168,39 @@ impl Sim<'_> {
         let p = *self.params();
         let path = motion::path(&self.current(i), &p);
         let window = law_end.min(self.search_limit()) - self.now;
-        let contact = p.cushion_contact_distance();
         let table = &self.setup.table;
         let mut found = Vec::new();
-        for (k, c) in table.cushions.iter().enumerate() {
-            if let Some(t) = detect::cushion::nose_time(&path, c, contact, window) {
-                found.push((t, Candidate::Nose { cushion: k }));
+        if st.motion == Motion::Airborne {
+            // In the air the nose is an edge at its height: met anywhere on the ball, or
+            // cleared (thesis §6.2's geometry, off the cloth).
+            let edge = NoseEdge {
+                height: p.cushion_height,
+                radius: p.ball_radius,
+            };
+            for (k, c) in table.cushions.iter().enumerate() {
+                if let Some(t) = cushion::nose_time_in_air(&path, c, edge, window) {
+                    found.push((t, Candidate::Nose { cushion: k }));
+                }
+                if let Some(t) = cushion::over_time(&path, c, edge, window) {
+                    found.push((t, Candidate::OverCushion { cushion: k }));
+                }
             }
-        }
-        for (k, j) in table.jaws.iter().enumerate() {
-            if let Some(t) = detect::cushion::jaw_time(&path, j, contact, window) {
-                found.push((t, Candidate::Jaw { jaw: k }));
+            for (k, j) in table.jaws.iter().enumerate() {
+                if let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window) {
+                    found.push((t, Candidate::Jaw { jaw: k }));
+                }
+            }
+        } else {
+            let contact = p.cushion_contact_distance();
+            for (k, c) in table.cushions.iter().enumerate() {
+                if let Some(t) = cushion::nose_time(&path, c, contact, window) {
+                    found.push((t, Candidate::Nose { cushion: k }));
+                }
+            }
+            for (k, j) in table.jaws.iter().enumerate() {
+                if let Some(t) = cushion::jaw_time(&path, j, contact, window) {
+                    found.push((t, Candidate::Jaw { jaw: k }));
+                }
             }
         }
         for (k, pk) in table.pockets.iter().enumerate() {
@@ -208,6 +242,7 @@ impl Sim<'_> {
 
     fn run(&mut self) -> Result<Ending, SimError> {
         let mut same_instant = 0usize;
+        let at_instant = self.opts.events_at_instant_cap(self.balls.len());
         while let Some(e) = self.queue.pop() {
             if self.is_stale(&e) {
                 self.stats.stale += 1;
@@ -229,14 +264,13 @@ impl Sim<'_> {
                 });
             }
             same_instant = if e.t == self.now { same_instant + 1 } else { 0 };
-            if same_instant > self.opts.max_events_at_instant {
+            if same_instant > at_instant {
                 return Err(SimError::Stuck {
                     t: self.now,
                     count: same_instant,
                 });
             }
             self.now = self.now.max(e.t);
-            self.stats.events += 1;
             self.resolve(&e)?;
         }
         // Nothing left to happen before the horizon (candidates are only searched up to it).
@@ -263,99 +297,159 @@ impl Sim<'_> {
         }
     }
 
-    /// The impact of ball `i` on a cushion nose, jaw or facing whose plan normal (from the
-    /// cushion towards the ball) is `normal`: (kind, balls, before, after, feature, normal speed).
-    fn cushion_impact(&self, i: usize, normal: Vec3, name: &str) -> Result<Resolved, SimError> {
+    /// The impact of ball `i` on a cushion nose, jaw or facing named `name`, touching at
+    /// `contact`; the ball leaves separating at [`MIN_SEPARATION`] at least.
+    fn cushion_impact(
+        &self,
+        i: usize,
+        contact: CushionContact,
+        name: &str,
+    ) -> Result<Resolved, SimError> {
         let p = *self.params();
         let s = self.current(i);
-        let vn = -s.vel.dot(&normal);
+        let vn = contact.approach(&s);
         let pe = Params {
-            e_cushion: crate::impact::restitution_floor(p.e_cushion_at(vn), vn),
+            e_cushion: p.e_cushion_at(vn),
             ..p
         };
-        let s2 = self
+        let mut s2 = self
             .setup
             .models
             .cushion
-            .resolve(&s, normal, &pe)
+            .resolve(&s, contact, &pe)
             .map_err(|err| self.impact_error(&[i], err))?;
-        Ok((
-            EventKind::BallCushion,
-            vec![i],
-            vec![s],
-            vec![motion::settle(s2, &p)],
-            Some(name.to_string()),
-            Some(vn),
-        ))
+        let away = match contact {
+            CushionContact::OnCloth { normal } => normal,
+            CushionContact::InAir { towards } => -towards,
+        };
+        separation::separate_from_fixed(&mut s2, away);
+        Ok(Resolved {
+            kind: EventKind::BallCushion,
+            balls: vec![i],
+            before: vec![s],
+            after: vec![motion::settle(s2, &p)],
+            feature: Some(name.to_string()),
+            normal_speed: Some(vn),
+        })
+    }
+
+    /// Where ball `i`, now touching the nose `edge`, touches it.
+    fn cushion_contact(&self, i: usize, edge: NoseLine) -> CushionContact {
+        let s = self.current(i);
+        let p = self.params();
+        let plan = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
+        // The plan normal from the cushion towards the ball, and the nearest point of the
+        // nose edge in plan.
+        let (normal, edge) = match edge {
+            NoseLine::Straight(c) => {
+                let d = c.normal.dot(&plan(s.pos - c.start));
+                (c.normal, plan(s.pos) - d * c.normal)
+            }
+            NoseLine::Jaw(j) => {
+                // A ball right above the jaw's axis meets it on the side it comes from.
+                let d = plan(s.pos - j.centre);
+                let n = d
+                    .try_normalize(0.0)
+                    .or_else(|| (-plan(s.vel)).try_normalize(0.0))
+                    .unwrap_or_else(Vec3::x);
+                (n, plan(j.centre) + j.radius * n)
+            }
+        };
+        if s.motion == Motion::Airborne {
+            let point = edge + Vec3::new(0.0, 0.0, p.cushion_height);
+            let towards = (point - s.pos).try_normalize(0.0).unwrap_or(-normal);
+            CushionContact::InAir { towards }
+        } else {
+            CushionContact::OnCloth { normal }
+        }
+    }
+
+    /// Ball `i` leaves play (into a pocket, or off the table over a cushion) where it is now.
+    fn out_of_play(&self, i: usize, motion: Motion, feature: &str) -> Resolved {
+        let s = self.current(i);
+        let gone = BallState {
+            vel: Vec3::zeros(),
+            spin: Vec3::zeros(),
+            motion,
+            ..s
+        };
+        Resolved {
+            kind: if motion == Motion::Pocketed {
+                EventKind::BallPocket
+            } else {
+                EventKind::BallOffTable
+            },
+            balls: vec![i],
+            before: vec![s],
+            after: vec![gone],
+            feature: Some(feature.to_string()),
+            normal_speed: None,
+        }
     }
 
     fn resolve(&mut self, e: &Entry) -> Result<(), SimError> {
         let p = *self.params();
         let table = &self.setup.table;
-        let (kind, involved, before, after, feature, normal_speed) = match e.kind {
+        let resolved = match e.kind {
             Candidate::BallBall { other } => {
                 let (a, b) = (self.current(e.a), self.current(other));
                 let n = (b.pos - a.pos).normalize();
                 let approach = (a.vel - b.vel).dot(&n);
-                let pe = Params {
-                    e_ball: crate::impact::restitution_floor(p.e_ball, approach),
-                    ..p
-                };
-                let (a2, b2) = self
+                let (mut a2, mut b2) = self
                     .setup
                     .models
                     .ball_ball
-                    .resolve(&a, &b, &pe)
+                    .resolve(&a, &b, &p)
                     .map_err(|err| self.impact_error(&[e.a, other], err))?;
-                (
-                    EventKind::BallBall,
-                    vec![e.a, other],
-                    vec![a, b],
-                    vec![motion::settle(a2, &p), motion::settle(b2, &p)],
-                    None,
-                    Some(approach),
-                )
+                separation::separate_balls(&mut a2, &mut b2, n);
+                Resolved {
+                    kind: EventKind::BallBall,
+                    balls: vec![e.a, other],
+                    before: vec![a, b],
+                    after: vec![motion::settle(a2, &p), motion::settle(b2, &p)],
+                    feature: None,
+                    normal_speed: Some(approach),
+                }
             }
             Candidate::Nose { cushion } => {
                 let c = &table.cushions[cushion];
-                self.cushion_impact(e.a, c.normal, &c.name)?
+                let contact = self.cushion_contact(e.a, NoseLine::Straight(c));
+                self.cushion_impact(e.a, contact, &c.name)?
             }
             Candidate::Jaw { jaw } => {
                 let j = &table.jaws[jaw];
-                let d = self.current(e.a).pos - j.centre;
-                let normal = crate::ball::Vec3::new(d.x, d.y, 0.0).normalize();
-                self.cushion_impact(e.a, normal, &j.name)?
+                let contact = self.cushion_contact(e.a, NoseLine::Jaw(j));
+                self.cushion_impact(e.a, contact, &j.name)?
             }
             Candidate::Pocket { pocket } => {
-                let s = self.current(e.a);
-                let mut s2 = s;
-                s2.vel = crate::ball::Vec3::zeros();
-                s2.spin = crate::ball::Vec3::zeros();
-                s2.motion = Motion::Pocketed;
-                (
-                    EventKind::BallPocket,
-                    vec![e.a],
-                    vec![s],
-                    vec![s2],
-                    Some(table.pockets[pocket].name.clone()),
-                    None,
-                )
+                self.out_of_play(e.a, Motion::Pocketed, &table.pockets[pocket].name)
+            }
+            Candidate::OverCushion { cushion } => {
+                self.out_of_play(e.a, Motion::OffTable, &table.cushions[cushion].name)
             }
             Candidate::Transition => {
                 let s = self.current(e.a);
                 let Some((t, s2)) = motion::finish(&self.balls[e.a].state, &s, &p) else {
                     return Ok(());
                 };
-                (
-                    EventKind::Transition(t),
-                    vec![e.a],
-                    vec![s],
-                    vec![s2],
-                    None,
-                    None,
-                )
+                Resolved {
+                    kind: EventKind::Transition(t),
+                    balls: vec![e.a],
+                    before: vec![s],
+                    after: vec![s2],
+                    feature: None,
+                    normal_speed: None,
+                }
             }
         };
+        let Resolved {
+            kind,
+            balls: involved,
+            before,
+            after,
+            feature,
+            normal_speed,
+        } = resolved;
         for (&i, s) in involved.iter().zip(&after) {
             if !s.is_finite() {
                 return Err(SimError::NonFinite {
@@ -385,10 +479,11 @@ impl Sim<'_> {
         }
         if kind == EventKind::Transition(motion::Transition::Refresh) {
             // A renewal of a law's accelerations, not a physical event: the track keeps the
-            // segment, the event list does not.
+            // segment, the event list and the event count do not.
             self.stats.refreshes += 1;
             return Ok(());
         }
+        self.stats.events += 1;
         self.events.push(Event {
             t: self.now,
             kind,

@@ -29,6 +29,12 @@ pub enum Candidate {
         /// Index into `Table::pockets`.
         pocket: usize,
     },
+    /// The ball, in the air, passes over a straight nose with its lowest point above it: it
+    /// leaves the table.
+    OverCushion {
+        /// Index into `Table::cushions`.
+        cushion: usize,
+    },
     /// The ball's motion law ends.
     Transition,
 }
@@ -50,7 +56,8 @@ impl Candidate {
             Candidate::Nose { cushion } => (1, None, cushion),
             Candidate::Jaw { jaw } => (2, None, jaw),
             Candidate::Pocket { pocket } => (3, None, pocket),
-            Candidate::Transition => (4, None, 0),
+            Candidate::OverCushion { cushion } => (4, None, cushion),
+            Candidate::Transition => (5, None, 0),
         }
     }
 }

@@ -22,7 +22,8 @@ pub const MAX_SPIN_SPEED: f64 = 100.0;
 pub struct SimOptions {
     /// Most events a shot may have before it is stopped with an error.
     pub max_events: usize,
-    /// Most events at one and the same instant before the shot is stopped with an error.
+    /// Most events at one and the same instant before the shot is stopped with an error; a
+    /// shot of n balls is allowed n^3 if that is more ([`SimOptions::events_at_instant_cap`]).
     pub max_events_at_instant: usize,
     /// Simulated time within which every ball must come to rest, s.
     pub max_time: f64,
@@ -38,6 +39,19 @@ impl Default for SimOptions {
             max_time: 3600.0,
             horizon: None,
         }
+    }
+}
+
+impl SimOptions {
+    /// The most events allowed at one instant in a shot of `balls` balls: the larger of
+    /// [`SimOptions::max_events_at_instant`] and `balls`^3. Same-instant impacts are resolved
+    /// one pair at a time (the sequential hypothesis), and a line of n touching balls struck
+    /// end on (a Newton's cradle) takes about n^3 / 20 of them before no touching pair
+    /// approaches (measured: 12,768 for 60 balls, 82,340 for 120), each leaving its pair
+    /// separating at [`crate::impact::MIN_SEPARATION`] at least.
+    pub fn events_at_instant_cap(&self, balls: usize) -> usize {
+        let cube = balls.saturating_mul(balls).saturating_mul(balls);
+        self.max_events_at_instant.max(cube)
     }
 }
 

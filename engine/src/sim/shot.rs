@@ -55,8 +55,8 @@ pub struct Stats {
     pub stale: usize,
     /// Candidates computed.
     pub candidates: usize,
-    /// Law segments renewed with the cloth's extra effects on (counted in `events`, not
-    /// listed among the shot's events).
+    /// Law segments renewed with the cloth's extra effects on: not events (neither listed nor
+    /// counted in `events`).
     pub refreshes: usize,
 }
 

@@ -143,7 +143,7 @@ pub fn film(
         }
         for (b, track) in sim.tracks.iter().enumerate() {
             let st = track.state_at(t, &sim.params);
-            if st.motion == Motion::Pocketed {
+            if !st.motion.in_play() {
                 continue;
             }
             let extra = offsets(b, t);

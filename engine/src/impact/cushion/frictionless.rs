@@ -15,6 +15,18 @@ pub fn resolve(ball: &BallState, normal: Vec3, p: &Params) -> BallState {
     out
 }
 
+/// State just after the impact of `ball`, in the air, on a nose edge at `towards` (unit, from
+/// its centre to the contact): restitution e_e on the velocity along the contact normal, the
+/// rest kept.
+pub fn resolve_in_air(ball: &BallState, towards: Vec3, p: &Params) -> BallState {
+    let vn = ball.vel.dot(&towards);
+    let mut out = *ball;
+    if vn > 0.0 {
+        out.vel -= (1.0 + p.e_cushion) * vn * towards;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

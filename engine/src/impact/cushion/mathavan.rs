@@ -30,6 +30,35 @@ pub fn contact(ball: &BallState, normal: Vec3, p: &Params) -> Impact {
     }
 }
 
+/// The contact problem of `ball`, in the air, touching a nose edge in the direction `towards`
+/// (unit, from its centre to the contact). The same laws with no cloth under the ball: the
+/// nose's normal impulse along `towards`, cushion friction mu_w, energetic restitution (thesis
+/// §6.2's model for any contact geometry; Stronge 2000).
+pub fn contact_in_air(towards: Vec3, p: &Params) -> Impact {
+    Impact {
+        bodies: [ImpactBody::ball(false), ImpactBody::fixed()],
+        normal: towards,
+        arm: [towards, Vec3::zeros()],
+        mu: p.mu_cushion,
+        mu_cloth: p.mu_slide,
+        e: p.e_cushion,
+    }
+}
+
+/// State just after the impact of `ball`, in the air, on a nose edge at `towards`.
+pub fn resolve_in_air(ball: &BallState, towards: Vec3, p: &Params) -> Result<BallState, ImpactError> {
+    let k = Kinematics {
+        vel: [ball.vel, Vec3::zeros()],
+        spin: [ball.spin, Vec3::zeros()],
+    };
+    let out = contact_in_air(towards, p).solve(&k, p.ball_radius, p.ball_mass, None)?;
+    Ok(BallState {
+        vel: out.after.vel[0],
+        spin: out.after.spin[0],
+        ..*ball
+    })
+}
+
 /// Solves the impact, optionally recording its progress.
 pub fn solve(
     ball: &BallState,

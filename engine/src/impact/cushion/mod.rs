@@ -29,17 +29,54 @@ impl CushionModel {
         }
     }
 
-    /// Resolves the impact of `ball` on a cushion whose plan normal (from the cushion towards
-    /// the ball) is `normal`: the state just after.
+    /// Resolves the impact of `ball` on a cushion at `contact`: the state just after.
     pub fn resolve(
         self,
         ball: &BallState,
-        normal: Vec3,
+        contact: CushionContact,
         p: &Params,
     ) -> Result<BallState, ImpactError> {
+        match (self, contact) {
+            (CushionModel::Frictionless, CushionContact::OnCloth { normal }) => {
+                Ok(frictionless::resolve(ball, normal, p))
+            }
+            (CushionModel::Frictionless, CushionContact::InAir { towards }) => {
+                Ok(frictionless::resolve_in_air(ball, towards, p))
+            }
+            (CushionModel::Mathavan, CushionContact::OnCloth { normal }) => {
+                mathavan::resolve(ball, normal, p)
+            }
+            (CushionModel::Mathavan, CushionContact::InAir { towards }) => {
+                mathavan::resolve_in_air(ball, towards, p)
+            }
+        }
+    }
+}
+
+/// Where a ball meets a cushion's nose (a straight nose, a jaw or a facing).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CushionContact {
+    /// A ball on the cloth: the nose touches it at height h (thesis §6.2). `normal` is the
+    /// plan normal, from the cushion towards the ball.
+    OnCloth {
+        /// Plan normal (unit, horizontal).
+        normal: Vec3,
+    },
+    /// A ball in the air touching the nose edge anywhere on its surface. `towards` is the unit
+    /// vector from the ball's centre to the contact point.
+    InAir {
+        /// From the centre to the contact (unit).
+        towards: Vec3,
+    },
+}
+
+impl CushionContact {
+    /// The approach speed of `ball` along the contact's normal, m/s: the plan normal for a
+    /// ball on the cloth (the cloth takes the vertical part), the contact normal in the air.
+    pub fn approach(&self, ball: &BallState) -> f64 {
         match self {
-            CushionModel::Frictionless => Ok(frictionless::resolve(ball, normal, p)),
-            CushionModel::Mathavan => mathavan::resolve(ball, normal, p),
+            CushionContact::OnCloth { normal } => -ball.vel.dot(normal),
+            CushionContact::InAir { towards } => ball.vel.dot(towards),
         }
     }
 }

@@ -1,0 +1,72 @@
+//! The smallest separation speed after an impact, and the push that gives it.
+//!
+//! A ball pressed against another ball (or a cushion) by its own acceleration meets it again
+//! and again, each bounce slower (restitution below 1 and the cloth's friction after each
+//! impact), infinitely often in a finite time: the series converges to a sustained contact,
+//! which no polynomial law describes. Following the impulse-based treatment of resting contact
+//! (Mirtich and Canny 1995), an impact that leaves the bodies separating slower than
+//! [`MIN_SEPARATION`] gets an extra normal impulse through the centres that makes them separate
+//! at exactly that speed. A sustained contact thus becomes a steady train of micro-collisions
+//! whose impulses average to the contact force, the bodies never more than a few micrometres
+//! apart. The price is bounded: the push adds 1/2 m_eff (MIN_SEPARATION^2 - s^2) to an impact
+//! that left the bodies separating at s >= 0, at most 1/2 m_eff MIN_SEPARATION^2 — 3.5e-8 J
+//! for two balls (m_eff = M/2), 7.0e-8 J for a ball against a cushion (m_eff = M) — which the
+//! cloth's friction then removes. The impact itself is solved with the model's own
+//! restitution, so its energy balance is the model's.
+
+use crate::ball::{BallState, Vec3};
+
+/// Smallest separation speed after an impact, m/s.
+pub const MIN_SEPARATION: f64 = 1e-3;
+
+/// Pushes balls `a` and `b` (equal masses) apart along `n`, the unit vector from `a`'s centre
+/// to `b`'s, so that they separate at [`MIN_SEPARATION`] at least.
+pub fn separate_balls(a: &mut BallState, b: &mut BallState, n: Vec3) {
+    let s = (b.vel - a.vel).dot(&n);
+    if s < MIN_SEPARATION {
+        let dv = 0.5 * (MIN_SEPARATION - s) * n;
+        a.vel -= dv;
+        b.vel += dv;
+    }
+}
+
+/// Pushes `ball` away from a fixed body along `away` (unit, from the body towards the ball) so
+/// that it separates at [`MIN_SEPARATION`] at least.
+pub fn separate_from_fixed(ball: &mut BallState, away: Vec3) {
+    let s = ball.vel.dot(&away);
+    if s < MIN_SEPARATION {
+        ball.vel += (MIN_SEPARATION - s) * away;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ball::Motion;
+
+    fn ball(vel: Vec3) -> BallState {
+        BallState {
+            pos: Vec3::zeros(),
+            vel,
+            spin: Vec3::zeros(),
+            motion: Motion::Sliding,
+        }
+    }
+
+    #[test]
+    fn slow_separations_are_raised_to_the_floor_and_no_further() {
+        let n = Vec3::x();
+        let (mut a, mut b) = (ball(Vec3::new(0.3, 0.2, 0.0)), ball(Vec3::new(0.3, -0.1, 0.0)));
+        separate_balls(&mut a, &mut b, n);
+        assert!(((b.vel - a.vel).dot(&n) - MIN_SEPARATION).abs() < 1e-15);
+        // Momentum is kept, the tangential velocities untouched.
+        assert!((a.vel + b.vel - Vec3::new(0.6, 0.1, 0.0)).norm() < 1e-15);
+        assert_eq!((a.vel.y, b.vel.y), (0.2, -0.1));
+        let (mut a, mut b) = (ball(Vec3::zeros()), ball(Vec3::new(0.5, 0.0, 0.0)));
+        separate_balls(&mut a, &mut b, n);
+        assert_eq!((a.vel, b.vel), (Vec3::zeros(), Vec3::new(0.5, 0.0, 0.0)));
+        let mut c = ball(Vec3::new(1.0, 0.0, 0.0));
+        separate_from_fixed(&mut c, Vec3::y());
+        assert_eq!(c.vel, Vec3::new(1.0, MIN_SEPARATION, 0.0));
+    }
+}
