@@ -3,7 +3,7 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_validation::convergence;
-use snooker_validation::crosscheck::{self, Outcome, SceneSpec};
+use snooker_validation::crosscheck::{self, RunReport, SceneSpec};
 use snooker_validation::nose;
 use snooker_validation::report::{self, Report};
 use snooker_validation::scenes::BUILTIN;
@@ -82,11 +82,10 @@ pub fn run(req: &Request, specs: &[SceneSpec]) -> Report {
     let with_cushions: Vec<&SceneSpec> = specs
         .iter()
         .filter(|s| {
-            runs.iter().any(|r| {
-                r.scene == s.name
-                    && matches!(&r.outcome, Outcome::Compared { comparison, .. }
-                        if comparison.sequence_ours.iter().any(|l| l.contains('|')))
-            })
+            runs.iter()
+                .filter(|r| r.scene == s.name)
+                .filter_map(RunReport::compared)
+                .any(|c| c.whole.ours.iter().any(|p| p.is_cushion()))
         })
         .collect();
     let pb = bar(with_cushions.len());

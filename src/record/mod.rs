@@ -620,6 +620,7 @@ fn event_text(shot: &Shot, e: &snooker_engine::Event) -> String {
     if let Some(f) = &e.feature {
         text += &match e.kind {
             EventKind::BallPocket => format!(" in {f}"),
+            EventKind::BallOffTable => format!(" over {f}"),
             _ => format!(" on {f}"),
         };
     }
@@ -658,6 +659,7 @@ fn log_events(rec: &RecordingStream, shot: &Shot) -> Result<(), RecordError> {
             EventKind::BallBall => ([255, 255, 255], 0.010),
             EventKind::BallCushion => ([255, 220, 0], 0.010),
             EventKind::BallPocket => ([255, 40, 40], 0.014),
+            EventKind::BallOffTable => ([255, 120, 0], 0.014),
             EventKind::Transition(_) => ([170, 170, 170], 0.005),
         };
         (f32x3(place), rgb(c), size)

@@ -2,19 +2,20 @@
 //! largest difference between the engines of each figure. The step is chosen where these
 //! settle (stop shrinking as dt halves): what is left is the soft contact's share.
 
-use crate::crosscheck::{Outcome, RunReport, SceneSpec, check};
+use crate::compare::FigureKind;
+use crate::crosscheck::{Method, RunReport, SceneSpec, check};
 use crate::scenes::ImpactModels;
 use serde::Serialize;
 use std::time::Instant;
 
 /// The figures in the study, in column order.
-pub const FIGURES: [&str; 6] = [
-    "impact time",
-    "velocity after impact",
-    "spin after impact",
-    "slide-to-roll time",
-    "slide-to-roll speed",
-    "final position",
+pub const FIGURES: [FigureKind; 6] = [
+    FigureKind::ImpactTime,
+    FigureKind::VelocityAfter,
+    FigureKind::SpinAfter,
+    FigureKind::RollTime,
+    FigureKind::RollSpeed,
+    FigureKind::FinalPosition,
 ];
 
 /// One time step of the study.
@@ -32,17 +33,17 @@ pub struct StepRow {
     pub seconds: f64,
 }
 
-/// The largest difference of each figure of [`FIGURES`] over `runs`.
+/// The largest difference of each figure of [`FIGURES`] over the runs of `runs` compared
+/// over the whole shot (a run compared stretch by stretch has by-design differences, landings,
+/// that do not shrink with the step).
 pub fn max_diffs(runs: &[RunReport]) -> Vec<f64> {
     FIGURES
         .iter()
-        .map(|name| {
+        .map(|&kind| {
             runs.iter()
-                .filter_map(|r| match &r.outcome {
-                    Outcome::Compared { comparison, .. } => Some(comparison),
-                    _ => None,
-                })
-                .flat_map(|c| c.figures.iter().filter(|f| f.name == *name))
+                .filter_map(RunReport::compared)
+                .filter(|c| c.method == Method::WholeShot)
+                .filter_map(|c| c.whole.figure(kind))
                 .map(|f| f.diff)
                 .fold(0.0, f64::max)
         })

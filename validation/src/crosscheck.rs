@@ -1,23 +1,25 @@
 //! One cross-check run: a scene with a choice of impact models, simulated by both engines,
-//! reduced to records and compared against the derived tolerances.
+//! reduced to digests and compared against the derived tolerances, over the whole shot or
+//! stretch by stretch ([`Method`]).
 
 use crate::compare::{Comparison, Scope, compare};
+use crate::digest::ShotDigest;
 use crate::ensemble::{HALF_WIDTH, HEADING_STEP, Stat, StatRow, stats, summarise, turned};
-use crate::rapier_run::{self, RapierRun};
+use crate::rapier_run::{Rapier, RapierRun, Until};
 use crate::rapier_world::{ImpactFriction, WorldConfig};
-use crate::record::Record;
 use crate::scenes::ImpactModels;
 use crate::shapes::{CushionContact, jaw_solid};
+use crate::stretch::{self, Stretch, Stretches};
 use crate::tolerance::{Budget, allowances};
 use serde::Serialize;
-use snooker_engine::{Setup, SimOptions, simulate};
+use snooker_engine::{Setup, Shot, SimOptions, simulate};
 use std::time::Instant;
 
 /// rapier's time step chosen by the convergence study (docs/validation.md), s.
 pub const DEFAULT_DT: f64 = 1e-4;
 
-/// Extra simulated time rapier is given beyond our engine's shot before it counts as not
-/// stopping, s.
+/// Extra simulated time rapier is given beyond our engine's shot (or stretch) before it counts
+/// as not stopping, s.
 const EXTRA_TIME: f64 = 5.0;
 
 /// Impacts closing slower than this are resting contacts, not compared, m/s: twice our
@@ -35,25 +37,85 @@ pub struct SceneSpec {
     pub options: SimOptions,
 }
 
+/// How a run's verdict is reached.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// The whole shot at once: the impact sequences must be the same and every figure within
+    /// its tolerance, accumulated over the shot. For runs whose impacts are the same law in
+    /// both engines (the frictionless models, the analytic limits), where only the time step
+    /// and the soft contact separate them.
+    WholeShot,
+    /// Stretch by stretch ([`crate::stretch`]): rapier re-seeded from our state after every
+    /// impact whose models differ by design, each impact's own difference against its
+    /// by-design bound, each stretch between impacts against the derived tolerances. For runs
+    /// with such impacts (frictional impacts, landings); their whole-shot comparison is kept
+    /// as information.
+    Stretches,
+}
+
+impl Method {
+    /// The method for a run whose impacts have `friction`, our engine's digest being `ours`:
+    /// stretch by stretch when one of its impacts differs by design, else the whole shot.
+    pub fn for_run(friction: bool, ours: &ShotDigest) -> Method {
+        if ours
+            .impacts
+            .iter()
+            .any(|i| stretch::differs_by_design(friction, &i.parties))
+        {
+            Method::Stretches
+        } else {
+            Method::WholeShot
+        }
+    }
+
+    /// Its name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::WholeShot => "whole shot",
+            Method::Stretches => "stretches",
+        }
+    }
+}
+
+/// A compared run.
+#[derive(Clone, Debug, Serialize)]
+pub struct Compared {
+    /// How the verdict is reached.
+    pub method: Method,
+    /// The whole shot compared at once: the verdict with [`Method::WholeShot`], information
+    /// with [`Method::Stretches`].
+    pub whole: Comparison,
+    /// The stretches (with [`Method::Stretches`]).
+    pub stretches: Vec<Stretch>,
+    /// Depth the balls sank into rapier's cloth, m.
+    pub sink: f64,
+    /// rapier's time step, s.
+    pub dt: f64,
+    /// rapier's steps over the whole shot.
+    pub steps: usize,
+    /// False when rapier's balls had not stopped in time (whole shot).
+    pub rapier_finished: bool,
+    /// Wall-clock seconds spent in both engines.
+    pub seconds: f64,
+}
+
+impl Compared {
+    /// The verdict's comparisons passed.
+    pub fn pass(&self) -> bool {
+        match self.method {
+            Method::WholeShot => self.rapier_finished && self.whole.pass(),
+            Method::Stretches => self.stretches.iter().all(Stretch::pass),
+        }
+    }
+}
+
 /// How a run went.
 #[derive(Clone, Debug, Serialize)]
 #[serde(rename_all = "snake_case", tag = "status")]
-pub enum Outcome {
+pub enum RunOutcome {
     /// Both engines ran and were compared.
-    Compared {
-        /// The comparison.
-        comparison: Comparison,
-        /// Depth the balls sank into rapier's cloth, m.
-        sink: f64,
-        /// rapier's time step, s.
-        dt: f64,
-        /// rapier's steps.
-        steps: usize,
-        /// False when rapier's balls had not stopped in time.
-        rapier_finished: bool,
-        /// Wall-clock seconds spent in rapier.
-        rapier_seconds: f64,
-    },
+    Compared(Box<Compared>),
     /// The run cannot be made yet (a model is missing), with why.
     Skipped {
         /// Why.
@@ -66,6 +128,37 @@ pub enum Outcome {
     },
 }
 
+/// The verdict of a run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// Compared, and every comparison of its method passed.
+    Pass,
+    /// Compared, and a comparison of its method failed.
+    Fail,
+    /// Not run: a model is missing.
+    Skip,
+    /// Our engine failed on the scene.
+    Error,
+}
+
+impl Verdict {
+    /// The verdict word of reports.
+    pub fn word(self) -> &'static str {
+        match self {
+            Verdict::Pass => "PASS",
+            Verdict::Fail => "FAIL",
+            Verdict::Skip => "SKIP",
+            Verdict::Error => "ERROR",
+        }
+    }
+
+    /// True unless the run failed (a skipped run is listed as skipped, not failed).
+    pub fn ok(self) -> bool {
+        matches!(self, Verdict::Pass | Verdict::Skip)
+    }
+}
+
 /// The result of one (scene, models) run.
 #[derive(Clone, Debug, Serialize)]
 pub struct RunReport {
@@ -74,24 +167,33 @@ pub struct RunReport {
     /// Impact models of the run.
     pub models: ImpactModels,
     /// What happened.
-    pub outcome: Outcome,
+    pub outcome: RunOutcome,
     /// For a chaotic scene: outcome statistics of rapier's shot against an ensemble of ours
     /// (measured, no verdict: see [`crate::ensemble`]).
     pub statistics: Vec<StatRow>,
 }
 
 impl RunReport {
-    /// True unless the run was compared and failed, or our engine failed. A skipped run passes
-    /// (it is listed as skipped).
-    pub fn pass(&self) -> bool {
+    /// The run's verdict.
+    pub fn verdict(&self) -> Verdict {
         match &self.outcome {
-            Outcome::Compared {
-                comparison,
-                rapier_finished,
-                ..
-            } => *rapier_finished && comparison.pass(),
-            Outcome::Skipped { .. } => true,
-            Outcome::Failed { .. } => false,
+            RunOutcome::Compared(c) if c.pass() => Verdict::Pass,
+            RunOutcome::Compared(_) => Verdict::Fail,
+            RunOutcome::Skipped { .. } => Verdict::Skip,
+            RunOutcome::Failed { .. } => Verdict::Error,
+        }
+    }
+
+    /// True unless the run was compared and failed, or our engine failed.
+    pub fn pass(&self) -> bool {
+        self.verdict().ok()
+    }
+
+    /// The comparison, if the run was compared.
+    pub fn compared(&self) -> Option<&Compared> {
+        match &self.outcome {
+            RunOutcome::Compared(c) => Some(c),
+            _ => None,
         }
     }
 }
@@ -114,7 +216,7 @@ pub fn packed(setup: &Setup) -> Vec<usize> {
 /// outcome is chaotic: only the impacts up to that one are compared, and not the states after
 /// it of the packed balls or of the ball that struck the pack (it rebounds from the pack as a
 /// whole in rapier, from one ball in ours).
-pub fn scope(setup: &Setup, ours: &Record) -> Scope {
+pub fn scope(setup: &Setup, ours: &ShotDigest) -> Scope {
     let pack = packed(setup);
     if pack.is_empty() {
         return Scope::default();
@@ -122,14 +224,15 @@ pub fn scope(setup: &Setup, ours: &Record) -> Scope {
     let first = ours
         .impacts
         .iter()
-        .position(|i| i.contact.balls().iter().any(|b| pack.contains(b)));
+        .position(|i| i.parties.balls().iter().any(|b| pack.contains(b)));
     let mut skip_after = pack;
     if let Some(k) = first {
-        skip_after.extend(ours.impacts[k].contact.balls());
+        skip_after.extend(ours.impacts[k].parties.balls());
     }
     Scope {
         impacts: Some(first.map_or(ours.impacts.len(), |k| k + 1)),
         skip_after,
+        ..Scope::default()
     }
 }
 
@@ -143,71 +246,122 @@ pub fn world_config(models: ImpactModels, dt: f64) -> WorldConfig {
     WorldConfig::new(dt, friction)
 }
 
-/// Both engines' records of `spec` with `models`: ours, rapier's run; or why not.
+/// `spec`'s setup with `models`, or why the run cannot be made.
+fn setup_with(spec: &SceneSpec, models: ImpactModels) -> Result<Setup, RunOutcome> {
+    let m = models
+        .models()
+        .map_err(|reason| RunOutcome::Skipped { reason })?;
+    Ok(Setup {
+        models: m,
+        ..spec.setup.clone()
+    })
+}
+
+/// Our engine's shot of `spec` with `models`, or why not.
+pub fn our_shot(spec: &SceneSpec, models: ImpactModels) -> Result<Shot, RunOutcome> {
+    let setup = setup_with(spec, models)?;
+    simulate(&setup, &spec.options).map_err(|e| RunOutcome::Failed {
+        reason: format!("our engine: {e}"),
+    })
+}
+
+/// Both engines' whole-shot digests of `spec` with `models`: ours, rapier's run; or why not.
 pub fn run_both(
     spec: &SceneSpec,
     models: ImpactModels,
     cfg: &WorldConfig,
-) -> Result<(Record, RapierRun), Outcome> {
-    let m = models
-        .models()
-        .map_err(|reason| Outcome::Skipped { reason })?;
-    let setup = Setup {
-        models: m,
-        ..spec.setup.clone()
-    };
-    let shot = simulate(&setup, &spec.options).map_err(|e| Outcome::Failed {
-        reason: format!("our engine: {e}"),
-    })?;
+) -> Result<(ShotDigest, RapierRun), RunOutcome> {
+    let setup = setup_with(spec, models)?;
+    let shot = our_shot(spec, models)?;
     let (window, slow) = (2.0 * cfg.dt, RESTING_APPROACH);
-    let ours = Record::from_shot(&shot).normalised(window, slow);
-    let mut rapier = rapier_run::run(&setup, cfg, shot.duration + EXTRA_TIME);
-    rapier.record = rapier.record.normalised(window, slow);
+    let ours = ShotDigest::from_shot(&shot, &setup.table).normalised(window, slow);
+    let mut rapier = crate::rapier_run::run(&setup, cfg, shot.duration + EXTRA_TIME);
+    rapier.digest = rapier.digest.normalised(window, slow);
     Ok((ours, rapier))
 }
 
-/// Runs `spec` with `models` in both engines at rapier time step `dt` and compares them.
+/// Runs `spec` with `models` in both engines at rapier time step `dt` and compares them with
+/// the method of the models.
 pub fn check(spec: &SceneSpec, models: ImpactModels, dt: f64) -> RunReport {
+    match our_shot(spec, models) {
+        Ok(shot) => check_shot(spec, models, dt, &shot),
+        Err(outcome) => RunReport {
+            scene: spec.name.clone(),
+            models,
+            outcome,
+            statistics: Vec::new(),
+        },
+    }
+}
+
+/// Compares `shot`, our engine's run of `spec` with `models` (as simulated, or altered by a
+/// test), with rapier's run of `spec` at time step `dt`.
+pub fn check_shot(spec: &SceneSpec, models: ImpactModels, dt: f64, shot: &Shot) -> RunReport {
     let report = |outcome| RunReport {
         scene: spec.name.clone(),
         models,
         outcome,
         statistics: Vec::new(),
     };
-    let cfg = world_config(models, dt);
-    let start = Instant::now();
-    let (ours, rapier) = match run_both(spec, models, &cfg) {
-        Ok(r) => r,
+    let setup = match setup_with(spec, models) {
+        Ok(s) => s,
         Err(outcome) => return report(outcome),
     };
-    let seconds = start.elapsed().as_secs_f64();
+    let cfg = world_config(models, dt);
+    let start = Instant::now();
+    let (window, slow) = (2.0 * dt, RESTING_APPROACH);
+    let ours = ShotDigest::from_shot(shot, &setup.table).normalised(window, slow);
+    let method = Method::for_run(models.friction(), &ours);
+    let mut rapier = Rapier::new(&setup, &cfg);
+    let initial: Vec<_> = setup.balls.iter().map(|b| b.state).collect();
+    let whole = rapier.run(0.0, &initial, Until::Rest, shot.duration + EXTRA_TIME);
+    let theirs = whole.digest.normalised(window, slow);
     let p = spec.setup.params;
     let jaw_radius = spec.setup.table.jaws.first().map_or(0.010, |j| j.radius);
     let budget = Budget {
         dt,
-        sink: rapier.sink,
+        sink: whole.sink,
         friction: models.friction(),
         level_cushions: cfg.cushion_contact == CushionContact::Level,
         nose_radius: jaw_solid(&p, jaw_radius, cfg.cushion_contact).0,
+        jaw_contact: jaw_radius + p.cushion_contact_distance(),
         params: p,
     };
-    let tol = allowances(&ours, &budget);
     let scope = scope(&spec.setup, &ours);
+    let whole_cmp = compare(&ours, &theirs, &allowances(&ours, &budget), &budget, &scope);
+    let stretches = match method {
+        Method::WholeShot => Vec::new(),
+        Method::Stretches => stretch::check(
+            &Stretches {
+                shot,
+                ours: &ours,
+                start: initial,
+                friction: models.friction(),
+                scope: &scope,
+                normalise: (window, slow),
+                extra_time: EXTRA_TIME,
+            },
+            &mut rapier,
+            &budget,
+        ),
+    };
     let statistics = if scope.impacts.is_some() {
-        ensemble_statistics(spec, models, &rapier.record, 2.0 * dt)
+        ensemble_statistics(spec, models, &theirs, window)
     } else {
         Vec::new()
     };
     RunReport {
         statistics,
-        ..report(Outcome::Compared {
-            comparison: compare(&ours, &rapier.record, &tol, &scope),
-            sink: rapier.sink,
+        ..report(RunOutcome::Compared(Box::new(Compared {
+            method,
+            whole: whole_cmp,
+            stretches,
+            sink: whole.sink,
             dt,
-            steps: rapier.steps,
-            rapier_finished: rapier.finished,
-            rapier_seconds: seconds,
-        })
+            steps: whole.steps,
+            rapier_finished: whole.finished,
+            seconds: start.elapsed().as_secs_f64(),
+        })))
     }
 }
 
@@ -215,22 +369,18 @@ pub fn check(spec: &SceneSpec, models: ImpactModels, dt: f64) -> RunReport {
 fn ensemble_statistics(
     spec: &SceneSpec,
     models: ImpactModels,
-    rapier: &Record,
+    rapier: &ShotDigest,
     window: f64,
 ) -> Vec<StatRow> {
-    let Ok(m) = models.models() else {
+    let Ok(setup) = setup_with(spec, models) else {
         return Vec::new();
-    };
-    let setup = Setup {
-        models: m,
-        ..spec.setup.clone()
     };
     let members: Vec<Vec<Stat>> = (-HALF_WIDTH..=HALF_WIDTH)
         .filter_map(|k| {
             let s = turned(&setup, k as f64 * HEADING_STEP);
             let shot = simulate(&s, &spec.options).ok()?;
-            let rec = Record::from_shot(&shot).normalised(window, RESTING_APPROACH);
-            Some(stats(&s, &rec))
+            let d = ShotDigest::from_shot(&shot, &s.table).normalised(window, RESTING_APPROACH);
+            Some(stats(&s, &d))
         })
         .collect();
     summarise(&members, &stats(&setup, rapier))
@@ -239,10 +389,7 @@ fn ensemble_statistics(
 /// The runs of a scene: the frictionless limit, and with friction when the scene has impacts.
 pub fn check_scene(spec: &SceneSpec, dt: f64) -> Vec<RunReport> {
     let first = check(spec, ImpactModels::Frictionless, dt);
-    let has_impacts = match &first.outcome {
-        Outcome::Compared { comparison, .. } => !comparison.sequence_ours.is_empty(),
-        _ => false,
-    };
+    let has_impacts = first.compared().is_some_and(|c| !c.whole.ours.is_empty());
     let mut out = vec![first];
     if has_impacts {
         out.push(check(spec, ImpactModels::Mathavan, dt));

@@ -7,7 +7,7 @@
 //! (far below any player's precision, so each is "the same shot"), and rapier's outcome is
 //! compared with the ensemble's mean and spread.
 
-use crate::record::{Contact, Record};
+use crate::digest::{Parties, ShotDigest};
 use serde::Serialize;
 use snooker_engine::{Setup, Vec3};
 
@@ -22,14 +22,15 @@ pub struct Stat {
 
 /// The statistics of a shot: ball-ball and cushion impacts, pots, balls moved by more than a
 /// ball radius, and the RMS distance of the balls that moved from their mean final position.
-pub fn stats(setup: &Setup, rec: &Record) -> Vec<Stat> {
-    let count =
-        |f: &dyn Fn(&Contact) -> bool| rec.impacts.iter().filter(|i| f(&i.contact)).count() as f64;
+pub fn stats(setup: &Setup, digest: &ShotDigest) -> Vec<Stat> {
+    let count = |f: &dyn Fn(&Parties) -> bool| {
+        digest.impacts.iter().filter(|i| f(&i.parties)).count() as f64
+    };
     let r = setup.params.ball_radius;
     let moved: Vec<Vec3> = setup
         .balls
         .iter()
-        .zip(&rec.finals)
+        .zip(&digest.finals)
         .filter(|(b, f)| f.pocket.is_none() && (f.pos.xy() - b.state.pos.xy()).norm() > r)
         .map(|(_, f)| Vec3::new(f.pos.x, f.pos.y, 0.0))
         .collect();
@@ -42,15 +43,15 @@ pub fn stats(setup: &Setup, rec: &Record) -> Vec<Stat> {
     vec![
         Stat {
             name: "ball-ball impacts",
-            value: count(&|c| matches!(c, Contact::Balls(..))),
+            value: count(&|c| matches!(c, Parties::Balls(..))),
         },
         Stat {
             name: "cushion impacts",
-            value: count(&|c| matches!(c, Contact::Cushion(..))),
+            value: count(&|c| c.is_cushion()),
         },
         Stat {
             name: "pots",
-            value: count(&|c| matches!(c, Contact::Pocket(..))),
+            value: count(&|c| matches!(c, Parties::Pocket(..))),
         },
         Stat {
             name: "balls moved",

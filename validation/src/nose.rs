@@ -11,7 +11,7 @@
 //! cushions ([`crate::shapes::CushionContact::Level`]), and this measurement shows the loss.
 
 use crate::crosscheck::{SceneSpec, run_both, world_config};
-use crate::record::{Contact, Record};
+use crate::digest::{Parties, ShotDigest};
 use crate::scenes::ImpactModels;
 use crate::shapes::CushionContact;
 use serde::Serialize;
@@ -33,9 +33,9 @@ pub struct NoseRebound {
 }
 
 /// Plan normal speed after / before of the first impact on a straight cushion.
-fn first_rebound(rec: &Record, table: &Table) -> Option<(String, f64, f64)> {
-    rec.impacts.iter().find_map(|i| match &i.contact {
-        Contact::Cushion(_, name) => {
+fn first_rebound(digest: &ShotDigest, table: &Table) -> Option<(String, f64, f64)> {
+    digest.impacts.iter().find_map(|i| match &i.parties {
+        Parties::Cushion(_, name) => {
             let c = table.cushions.iter().find(|c| &c.name == name)?;
             let after = i.after[0].vel.dot(&c.normal);
             Some((name.clone(), i.approach, after / i.approach))
@@ -51,7 +51,7 @@ pub fn nose_rebound(spec: &SceneSpec, dt: f64) -> Option<NoseRebound> {
     cfg.cushion_contact = CushionContact::Nose;
     let (ours, rapier) = run_both(spec, ImpactModels::Frictionless, &cfg).ok()?;
     let (cushion, approach, e_ours) = first_rebound(&ours, &spec.setup.table)?;
-    let (_, _, e_rapier) = first_rebound(&rapier.record, &spec.setup.table)?;
+    let (_, _, e_rapier) = first_rebound(&rapier.digest, &spec.setup.table)?;
     Some(NoseRebound {
         scene: spec.name.clone(),
         cushion,

@@ -64,23 +64,52 @@ pub enum ImpactFriction {
     On,
 }
 
-/// Vertical speed below which a ball has settled into the cloth, m/s (within a nanometre of
-/// rest for rapier's contact time constants of tens of milliseconds).
-const SETTLED_SPEED: f64 = 1e-8;
+/// Change of a resting ball's depth over [`SETTLE_CHECK`] steps below which it has settled
+/// into the cloth, m. rapier corrects the penetration of its soft contacts through the
+/// positions, not the velocities, so a sinking ball's velocity reads zero: the depth itself is
+/// watched (it approaches the contact spring's static deflection g / (2 pi f)^2 with a time
+/// constant of about a third of a second).
+const SETTLED_DEPTH_CHANGE: f64 = 1e-10;
 
-/// Time for a resting ball to settle into rapier's soft cloth: ten time constants of the slow
-/// mode of the contact's spring-damper, 2 zeta / omega when overdamped (zeta > 1), else
-/// 1 / (zeta omega), s.
-fn settle_time(cfg: &WorldConfig) -> f64 {
-    let omega = 2.0 * std::f64::consts::PI * cfg.contact_hz;
-    let zeta = cfg.contact_damping;
-    let tau = if zeta > 1.0 {
-        2.0 * zeta / omega
-    } else {
-        1.0 / (zeta.max(1e-3) * omega)
+/// Steps between two looks at the depth while settling.
+const SETTLE_CHECK: usize = 100;
+
+/// Depth a ball resting on the cloth sinks into it in rapier with the contacts of `cfg`, m:
+/// measured once per (ball, contact settings) on a world of one ball, then cached (every ball
+/// of a scene has the same radius and mass). Balls are placed at this depth rather than settled
+/// together at the start of every run, which would cost seconds of simulated time per run.
+pub fn rest_depth(params: &Params, cfg: &WorldConfig) -> f64 {
+    type Key = [u64; 6];
+    static CACHE: std::sync::Mutex<Vec<(Key, f64)>> = std::sync::Mutex::new(Vec::new());
+    let key: Key = [
+        params.ball_radius,
+        params.ball_mass,
+        params.g,
+        cfg.dt,
+        cfg.contact_hz,
+        cfg.contact_damping,
+    ]
+    .map(f64::to_bits);
+    let cached = |c: &[(Key, f64)]| c.iter().find(|(k, _)| *k == key).map(|&(_, d)| d);
+    if let Some(d) = CACHE.lock().ok().and_then(|c| cached(&c)) {
+        return d;
+    }
+    let ball = Ball {
+        id: "probe".into(),
+        kind: snooker_engine::BallKind::Other,
+        state: snooker_engine::BallState::at_rest(0.0, 0.0, params.ball_radius),
     };
-    10.0 * tau
+    let mut w = World::new(&Table::open(), params, &[ball], cfg);
+    let d = w.settle(SETTLE_TIME);
+    if let Ok(mut c) = CACHE.lock() {
+        c.push((key, d));
+    }
+    d
 }
+
+/// Longest time a resting ball is given to sink into rapier's soft cloth, s (it settles within
+/// about 3.5 s: ten time constants).
+const SETTLE_TIME: f64 = 5.0;
 
 /// rapier's settings for a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -205,7 +234,6 @@ pub struct World {
     pockets: Vec<ColliderHandle>,
     params: Params,
     time: f64,
-    settle_time: f64,
 }
 
 fn to_glam(v: Vec3) -> Vector {
@@ -218,7 +246,7 @@ fn from_glam(v: Vector) -> Vec3 {
 
 impl World {
     /// Builds the world for `table` and `balls` (their starting states are applied by
-    /// [`World::launch`] after the balls have settled into the cloth).
+    /// [`World::place`], at the depth of [`rest_depth`] for balls on the cloth).
     pub fn new(table: &Table, params: &Params, balls: &[Ball], cfg: &WorldConfig) -> World {
         let mut phys = PhysicsWorld::new();
         phys.gravity = Vector::new(0.0, 0.0, -params.g);
@@ -302,39 +330,55 @@ impl World {
             pockets,
             params: *params,
             time: 0.0,
-            settle_time: settle_time(cfg),
         }
     }
 
-    /// Lets the resting balls sink into the soft cloth until they are still (at least ten of the
-    /// contact's time constants, at most `max_time` seconds), then gives every ball its starting velocity and spin and sets the clock to 0.
-    /// Returns the depth the balls sank, m.
-    pub fn launch(&mut self, balls: &[Ball], max_time: f64) -> f64 {
-        let dt = self.dt();
-        let steps = (max_time / dt).ceil() as usize;
-        let min_steps = (self.settle_time / dt).ceil() as usize;
-        for k in 0..steps {
-            self.step();
-            if self.is_empty() || (k >= min_steps && self.kinematics(0).vel.z.abs() < SETTLED_SPEED)
-            {
+    /// Lets the resting balls sink into the soft cloth until they are still (their depth changes
+    /// by less than [`SETTLED_DEPTH_CHANGE`] over [`SETTLE_CHECK`] steps, or `max_time` seconds
+    /// pass). Returns the depth they sank, m.
+    pub fn settle(&mut self, max_time: f64) -> f64 {
+        if self.is_empty() {
+            return 0.0;
+        }
+        let depth = |w: &World| w.params.ball_radius - w.kinematics(0).pos.z;
+        let checks = (max_time / (self.dt() * SETTLE_CHECK as f64)).ceil() as usize;
+        let mut last = depth(self);
+        for _ in 0..checks {
+            for _ in 0..SETTLE_CHECK {
+                self.step();
+            }
+            let now = depth(self);
+            if (now - last).abs() < SETTLED_DEPTH_CHANGE {
                 break;
             }
+            last = now;
         }
-        let sink = if self.is_empty() {
-            0.0
-        } else {
-            self.params.ball_radius - self.kinematics(0).pos.z
-        };
-        for (slot, b) in self.balls.iter().zip(balls) {
+        depth(self)
+    }
+
+    /// Gives every ball the state `states[i]` (`None`: out of play, pocketed) and sets the
+    /// clock to `t`, s.
+    pub fn place(&mut self, t: f64, states: &[Option<Kinematics>]) {
+        for (slot, k) in self.balls.iter_mut().zip(states) {
             let rb = &mut self.phys.bodies[slot.body];
-            let z = rb.translation().z;
-            let lift = (b.state.pos.z - self.params.ball_radius).max(0.0);
-            rb.set_translation(Vector::new(b.state.pos.x, b.state.pos.y, z + lift), true);
-            rb.set_linvel(to_glam(b.state.vel), true);
-            rb.set_angvel(to_glam(b.state.spin), true);
+            match k {
+                Some(k) => {
+                    slot.in_play = true;
+                    rb.set_enabled(true);
+                    rb.set_translation(to_glam(k.pos), true);
+                    rb.set_linvel(to_glam(k.vel), true);
+                    rb.set_angvel(to_glam(k.spin), true);
+                    rb.reset_forces(true);
+                    rb.reset_torques(true);
+                }
+                None => {
+                    slot.in_play = false;
+                    rb.set_enabled(false);
+                }
+            }
         }
-        self.time = 0.0;
-        sink
+        self.rules.cloth_friction_off.fill(false);
+        self.time = t;
     }
 
     /// The time step, s.
@@ -342,7 +386,7 @@ impl World {
         self.phys.integration_parameters.dt
     }
 
-    /// Simulated time since [`World::launch`], s.
+    /// Simulated time of the shot (as set by [`World::place`]), s.
     pub fn time(&self) -> f64 {
         self.time
     }

@@ -1,10 +1,11 @@
 //! The cross-check report: a terminal table, the Markdown document (docs/validation.md) and
 //! JSON.
 
-use crate::compare::{Comparison, Figure};
+use crate::compare::{Comparison, Figure, FigureKind};
 use crate::convergence::{FIGURES, StepRow};
-use crate::crosscheck::{Outcome, RunReport};
+use crate::crosscheck::{Compared, Method, RunOutcome, RunReport, Verdict};
 use crate::nose::NoseRebound;
+use crate::stretch::Stretch;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -21,6 +22,19 @@ pub struct Report {
     pub convergence: Vec<StepRow>,
 }
 
+/// How many runs had each verdict.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// Runs compared (passed or failed).
+    pub compared: usize,
+    /// Runs compared and passed.
+    pub passed: usize,
+    /// Runs failed (compared and failed, or our engine failed).
+    pub failed: usize,
+    /// Runs skipped.
+    pub skipped: usize,
+}
+
 impl Report {
     /// True when no run failed.
     pub fn pass(&self) -> bool {
@@ -28,57 +42,62 @@ impl Report {
     }
 
     /// Runs compared, passed, failed and skipped.
-    pub fn counts(&self) -> (usize, usize, usize, usize) {
-        let compared = self
-            .runs
-            .iter()
-            .filter(|r| matches!(r.outcome, Outcome::Compared { .. }))
-            .count();
-        let skipped = self
-            .runs
-            .iter()
-            .filter(|r| matches!(r.outcome, Outcome::Skipped { .. }))
-            .count();
-        let failed = self.runs.iter().filter(|r| !r.pass()).count();
-        let passed = self
-            .runs
-            .iter()
-            .filter(|r| matches!(r.outcome, Outcome::Compared { .. }) && r.pass())
-            .count();
-        (compared, passed, failed, skipped)
+    pub fn counts(&self) -> Counts {
+        let mut c = Counts::default();
+        for r in &self.runs {
+            match r.verdict() {
+                Verdict::Pass => {
+                    c.compared += 1;
+                    c.passed += 1;
+                }
+                Verdict::Fail => {
+                    c.compared += 1;
+                    c.failed += 1;
+                }
+                Verdict::Skip => c.skipped += 1,
+                Verdict::Error => c.failed += 1,
+            }
+        }
+        c
     }
 }
 
-/// The verdict word of a run.
-pub fn verdict(r: &RunReport) -> &'static str {
-    match &r.outcome {
-        Outcome::Compared { .. } if r.pass() => "PASS",
-        Outcome::Compared { .. } => "FAIL",
-        Outcome::Skipped { .. } => "SKIP",
-        Outcome::Failed { .. } => "ERROR",
-    }
-}
-
-fn comparison(r: &RunReport) -> Option<&Comparison> {
-    match &r.outcome {
-        Outcome::Compared { comparison, .. } => Some(comparison),
-        _ => None,
-    }
-}
-
-/// "matched n" or "ours n / rapier m" for the compared impacts.
+/// "n same" or "DIFFER (ours n, rapier m)" for the compared impacts.
 fn sequence_cell(c: &Comparison) -> String {
     let n = c.compared;
     if c.sequence_match {
         format!("{n} same")
     } else {
-        format!("DIFFER ({n} vs {})", c.sequence_rapier.len().min(n.max(1)))
+        format!("DIFFER (ours {n}, rapier {})", c.rapier.len())
     }
 }
 
-/// The compact "diff / tol" of a figure, or "-" when the run has no such figure.
-fn figure_cell(c: &Comparison, name: &str) -> String {
-    match c.figures.iter().find(|f| f.name == name) {
+/// "n stretches, all same" or "n stretches, k differ".
+fn stretches_cell(stretches: &[Stretch]) -> String {
+    let differ = stretches
+        .iter()
+        .filter(|s| !s.comparison.sequence_match)
+        .count();
+    if differ == 0 {
+        format!("{} same", stretches.len())
+    } else {
+        format!("{} of {} DIFFER", differ, stretches.len())
+    }
+}
+
+/// The worst figure of a kind over several comparisons (largest ratio to its tolerance).
+fn worst_of<'a>(
+    cs: impl IntoIterator<Item = &'a Comparison>,
+    kind: FigureKind,
+) -> Option<&'a Figure> {
+    cs.into_iter()
+        .filter_map(|c| c.figure(kind))
+        .max_by(|a, b| a.ratio().total_cmp(&b.ratio()))
+}
+
+/// The compact "diff / tol" of a figure, or "-" when there is none.
+fn figure_cell(f: Option<&Figure>) -> String {
+    match f {
         Some(f) => format!(
             "{} / {}{}",
             sci(f.diff),
@@ -102,8 +121,8 @@ pub fn sci(x: f64) -> String {
 
 fn figure_line(f: &Figure) -> String {
     format!(
-        "    {:<22} {:<34} ours {:>11.6} rapier {:>11.6} diff {:>9} tol {:>9} {}",
-        f.name,
+        "    {:<26} {:<40} ours {:>11.6} rapier {:>11.6} diff {:>9} tol {:>9} {}",
+        f.kind.name(),
         f.at,
         f.ours,
         f.rapier,
@@ -113,39 +132,60 @@ fn figure_line(f: &Figure) -> String {
     )
 }
 
+/// The whole-shot comparison as information: "same, within", "same, beyond", "differs".
+fn information_cell(c: &Comparison) -> &'static str {
+    match (c.sequence_match, c.figures.iter().all(Figure::pass)) {
+        (true, true) => "same sequence, within",
+        (true, false) => "same sequence, beyond",
+        (false, _) => "sequence differs",
+    }
+}
+
+/// The figures of the Markdown table of stretch-by-stretch runs, in column order.
+const STRETCH_FIGURES: [FigureKind; 8] = [
+    FigureKind::ImpactTime,
+    FigureKind::VelocityBefore,
+    FigureKind::SpinBefore,
+    FigureKind::VelocityChange,
+    FigureKind::SpinChange,
+    FigureKind::RollTime,
+    FigureKind::RollSpeed,
+    FigureKind::FinalPosition,
+];
+
 /// The terminal table: one line per run, then each compared run's figures.
 pub fn text(report: &Report) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{:<18} {:<13} {:<16} {:<7} details",
-        "scene", "models", "impacts", "verdict"
+        "{:<20} {:<13} {:<11} {:<24} {:<7} details",
+        "scene", "models", "method", "impacts", "verdict"
     );
     for r in &report.runs {
-        let (seq, detail) = match &r.outcome {
-            Outcome::Compared {
-                comparison, sink, ..
-            } => (sequence_cell(comparison), format!("sink {} m", sci(*sink))),
-            Outcome::Skipped { reason } | Outcome::Failed { reason } => {
-                ("-".into(), reason.clone())
+        let (method, seq, detail) = match &r.outcome {
+            RunOutcome::Compared(c) => (
+                c.method.name(),
+                match c.method {
+                    Method::WholeShot => sequence_cell(&c.whole),
+                    Method::Stretches => format!("{} stretches", stretches_cell(&c.stretches)),
+                },
+                format!("sink {} m", sci(c.sink)),
+            ),
+            RunOutcome::Skipped { reason } | RunOutcome::Failed { reason } => {
+                ("-", "-".into(), reason.clone())
             }
         };
         let _ = writeln!(
             out,
-            "{:<18} {:<13} {:<16} {:<7} {detail}",
+            "{:<20} {:<13} {:<11} {:<24} {:<7} {detail}",
             r.scene,
             r.models.name(),
+            method,
             seq,
-            verdict(r)
+            r.verdict().word()
         );
-        if let Some(c) = comparison(r) {
-            for f in &c.figures {
-                let _ = writeln!(out, "{}", figure_line(f));
-            }
-            if !c.sequence_match {
-                let _ = writeln!(out, "    ours:   {}", c.sequence_ours.join(", "));
-                let _ = writeln!(out, "    rapier: {}", c.sequence_rapier.join(", "));
-            }
+        if let Some(c) = r.compared() {
+            text_compared(&mut out, c);
         }
         for s in &r.statistics {
             let _ = writeln!(
@@ -155,70 +195,85 @@ pub fn text(report: &Report) -> String {
             );
         }
     }
-    let (compared, passed, failed, skipped) = report.counts();
+    let c = report.counts();
     let _ = writeln!(
         out,
-        "\n{compared} runs compared at dt = {} s: {passed} passed, {failed} failed; {skipped} skipped",
-        report.dt
+        "\n{} runs compared at dt = {} s: {} passed, {} failed; {} skipped",
+        c.compared, report.dt, c.passed, c.failed, c.skipped
     );
     out
+}
+
+fn text_sequences(out: &mut String, c: &Comparison, indent: &str) {
+    if !c.sequence_match {
+        let _ = writeln!(out, "{indent}ours:   {}", c.labels_ours().join(", "));
+        let _ = writeln!(out, "{indent}rapier: {}", c.labels_rapier().join(", "));
+    }
+}
+
+fn text_compared(out: &mut String, c: &Compared) {
+    match c.method {
+        Method::WholeShot => {
+            for f in &c.whole.figures {
+                let _ = writeln!(out, "{}", figure_line(f));
+            }
+            text_sequences(out, &c.whole, "    ");
+        }
+        Method::Stretches => {
+            for (k, s) in c.stretches.iter().enumerate() {
+                let _ = writeln!(
+                    out,
+                    "  stretch {} from {:.6} s (after {}): {} {}{}",
+                    k + 1,
+                    s.from,
+                    s.after,
+                    sequence_cell(&s.comparison),
+                    if s.pass() { "ok" } else { "FAIL" },
+                    if s.rapier_finished {
+                        ""
+                    } else {
+                        " (rapier ran out of time)"
+                    }
+                );
+                for f in &s.comparison.figures {
+                    let _ = writeln!(out, "{}", figure_line(f));
+                }
+                text_sequences(out, &s.comparison, "    ");
+            }
+            let _ = writeln!(
+                out,
+                "  whole shot (information): {}",
+                information_cell(&c.whole)
+            );
+            text_sequences(out, &c.whole, "    ");
+        }
+    }
 }
 
 /// The Markdown document: the method and its justification ([`METHOD`]), then the tables.
 pub fn markdown(report: &Report) -> String {
     let mut out = String::new();
-    let (compared, passed, failed, skipped) = report.counts();
+    let c = report.counts();
     let _ = writeln!(out, "# Cross-check against rapier\n");
     let _ = writeln!(
         out,
         "Generated by `cargo run --release -- validate --convergence --markdown docs/validation.md`; \
          do not edit by hand.\n"
     );
-    let why_skipped = if skipped > 0 {
+    let why_skipped = if c.skipped > 0 {
         " (impact models not in the engine)"
     } else {
         ""
     };
     let _ = writeln!(
         out,
-        "**Result:** {compared} runs compared at rapier time step dt = {} s: {passed} passed, \
-         {failed} failed; {skipped} skipped{why_skipped}.\n",
-        report.dt
+        "**Result:** {} runs compared at rapier time step dt = {} s: {} passed, \
+         {} failed; {} skipped{why_skipped}.\n",
+        c.compared, report.dt, c.passed, c.failed, c.skipped
     );
     out.push_str(METHOD);
-    out.push_str("\n## Results, one row per run\n\n");
-    out.push_str(
-        "Each cell: the largest difference between the engines / its tolerance (the event or ball \
-         where the ratio is worst is in the details below).\n\n",
-    );
-    let _ = write!(out, "| scene | models | impacts | verdict |");
-    for f in FIGURES {
-        let _ = write!(out, " {f} |");
-    }
-    out.push('\n');
-    out.push_str("|---|---|---|---|");
-    for _ in FIGURES {
-        out.push_str("---|");
-    }
-    out.push('\n');
-    for r in &report.runs {
-        let _ = write!(out, "| {} | {} |", r.scene, r.models.name());
-        match comparison(r) {
-            Some(c) => {
-                let _ = write!(out, " {} | {} |", sequence_cell(c), verdict(r));
-                for f in FIGURES {
-                    let _ = write!(out, " {} |", figure_cell(c, f));
-                }
-            }
-            None => {
-                let _ = write!(out, " - | {} |", verdict(r));
-                for _ in FIGURES {
-                    out.push_str(" - |");
-                }
-            }
-        }
-        out.push('\n');
-    }
+    whole_table(&mut out, report);
+    stretch_table(&mut out, report);
     details(&mut out, report);
     statistics(&mut out, report);
     nose(&mut out, report);
@@ -226,80 +281,251 @@ pub fn markdown(report: &Report) -> String {
     out
 }
 
+/// Runs whose verdict is reached by `method` (skipped and failed runs, which have none, with
+/// the whole shots).
+fn runs_of(report: &Report, method: Method) -> impl Iterator<Item = &RunReport> {
+    report
+        .runs
+        .iter()
+        .filter(move |r| r.compared().map_or(Method::WholeShot, |c| c.method) == method)
+}
+
+fn whole_table(out: &mut String, report: &Report) {
+    out.push_str("\n## Results: whole shot\n\n");
+    out.push_str(
+        "Each cell: the largest difference between the engines / its tolerance (the event or ball \
+         where the ratio is worst is in the details below).\n\n",
+    );
+    let _ = write!(out, "| scene | models | impacts | verdict |");
+    for f in FIGURES {
+        let _ = write!(out, " {} |", f.name());
+    }
+    out.push_str("\n|---|---|---|---|");
+    for _ in FIGURES {
+        out.push_str("---|");
+    }
+    out.push('\n');
+    for r in runs_of(report, Method::WholeShot) {
+        let _ = write!(out, "| {} | {} |", r.scene, r.models.name());
+        match r.compared() {
+            Some(c) => {
+                let _ = write!(
+                    out,
+                    " {} | {} |",
+                    sequence_cell(&c.whole),
+                    r.verdict().word()
+                );
+                for f in FIGURES {
+                    let _ = write!(out, " {} |", figure_cell(c.whole.figure(f)));
+                }
+            }
+            None => {
+                let _ = write!(out, " - | {} |", r.verdict().word());
+                for _ in FIGURES {
+                    out.push_str(" - |");
+                }
+            }
+        }
+        out.push('\n');
+    }
+}
+
+fn stretch_table(out: &mut String, report: &Report) {
+    if runs_of(report, Method::Stretches).next().is_none() {
+        return;
+    }
+    out.push_str("\n## Results: stretch by stretch\n\n");
+    out.push_str(
+        "Each cell: the largest difference over the run's stretches / its tolerance; the impact's \
+         changes are against their by-design bounds. The last column is the whole-shot \
+         comparison, kept as information (no verdict).\n\n",
+    );
+    let _ = write!(out, "| scene | models | stretches | verdict |");
+    for f in STRETCH_FIGURES {
+        let _ = write!(out, " {} |", f.name());
+    }
+    out.push_str(" whole shot (information) |\n|---|---|---|---|");
+    for _ in STRETCH_FIGURES {
+        out.push_str("---|");
+    }
+    out.push_str("---|\n");
+    for r in runs_of(report, Method::Stretches) {
+        let _ = write!(out, "| {} | {} |", r.scene, r.models.name());
+        match r.compared() {
+            Some(c) => {
+                let _ = write!(
+                    out,
+                    " {} | {} |",
+                    stretches_cell(&c.stretches),
+                    r.verdict().word()
+                );
+                for f in STRETCH_FIGURES {
+                    let cs = c.stretches.iter().map(|s| &s.comparison);
+                    let _ = write!(out, " {} |", figure_cell(worst_of(cs, f)));
+                }
+                let _ = write!(out, " {} |", information_cell(&c.whole));
+            }
+            None => {
+                let _ = write!(out, " - | {} |", r.verdict().word());
+                for _ in STRETCH_FIGURES {
+                    out.push_str(" - |");
+                }
+                out.push_str(" - |");
+            }
+        }
+        out.push('\n');
+    }
+}
+
+fn figure_rows(out: &mut String, figures: &[Figure]) {
+    out.push_str("| figure | at | ours | rapier | difference | tolerance | ok |\n");
+    out.push_str("|---|---|---|---|---|---|---|\n");
+    for f in figures {
+        let _ = writeln!(
+            out,
+            "| {} ({}) | {} | {:.6} | {:.6} | {} | {} | {} |",
+            f.kind.name(),
+            f.kind.unit(),
+            f.at,
+            f.ours,
+            f.rapier,
+            sci(f.diff),
+            sci(f.tol),
+            if f.pass() { "yes" } else { "**no**" }
+        );
+    }
+}
+
+fn sequence_list(c: &Comparison, ours: bool) -> String {
+    let l = if ours {
+        c.labels_ours()
+    } else {
+        c.labels_rapier()
+    };
+    if l.is_empty() {
+        "none".into()
+    } else {
+        l.join(", ")
+    }
+}
+
 fn details(out: &mut String, report: &Report) {
     out.push_str("\n## Details\n\n");
     out.push_str(
         "Values at the worst event: times in s, velocities in m/s (vector norms), spins in \
          rad/s, final positions as the distance of the plan position from the origin (the \
-         difference is the distance between the two positions).\n",
+         difference is the distance between the two positions). A change at an impact is the \
+         norm of (after − before) of one ball; its difference is the norm of the difference of \
+         the two engines' changes.\n",
     );
     for r in &report.runs {
+        let _ = write!(out, "\n### {} ({})\n\n", r.scene, r.models.name());
         match &r.outcome {
-            Outcome::Compared {
-                comparison: c,
-                sink,
-                steps,
-                rapier_finished,
-                ..
-            } => {
+            RunOutcome::Compared(c) => {
                 let _ = writeln!(
                     out,
-                    "\n### {} ({})\n\nImpacts (ours): {}. rapier: {} steps, sink {} m{}.\n",
-                    r.scene,
-                    r.models.name(),
-                    if c.sequence_ours.is_empty() {
-                        "none".into()
-                    } else {
-                        c.sequence_ours.join(", ")
-                    },
-                    steps,
-                    sci(*sink),
-                    if *rapier_finished {
+                    "Impacts (ours): {}. rapier: {} steps over the whole shot, sink {} m{}.\n",
+                    sequence_list(&c.whole, true),
+                    c.steps,
+                    sci(c.sink),
+                    if c.rapier_finished {
                         ""
                     } else {
                         "; **the balls had not stopped**"
                     }
                 );
-                if !c.sequence_match {
-                    let _ = writeln!(
-                        out,
-                        "**Sequences differ** (first {} compared). rapier: {}.\n",
-                        c.compared,
-                        c.sequence_rapier.join(", ")
-                    );
-                }
-                out.push_str("| figure | at | ours | rapier | difference | tolerance | ok |\n");
-                out.push_str("|---|---|---|---|---|---|---|\n");
-                for f in &c.figures {
-                    let _ = writeln!(
-                        out,
-                        "| {} ({}) | {} | {:.6} | {:.6} | {} | {} | {} |",
-                        f.name,
-                        f.unit,
-                        f.at,
-                        f.ours,
-                        f.rapier,
-                        sci(f.diff),
-                        sci(f.tol),
-                        if f.pass() { "yes" } else { "**no**" }
-                    );
+                match c.method {
+                    Method::WholeShot => {
+                        if !c.whole.sequence_match {
+                            let _ = writeln!(
+                                out,
+                                "**Sequences differ** (first {} compared). rapier: {}.\n",
+                                c.whole.compared,
+                                sequence_list(&c.whole, false)
+                            );
+                        }
+                        figure_rows(out, &c.whole.figures);
+                    }
+                    Method::Stretches => stretch_details(out, c),
                 }
             }
-            Outcome::Skipped { reason } | Outcome::Failed { reason } => {
-                let what = if matches!(r.outcome, Outcome::Skipped { .. }) {
-                    "Skipped"
-                } else {
-                    "**Error**"
-                };
-                let _ = writeln!(
-                    out,
-                    "\n### {} ({})\n\n{what}: {reason}.",
-                    r.scene,
-                    r.models.name()
-                );
+            RunOutcome::Skipped { reason } => {
+                let _ = writeln!(out, "Skipped: {reason}.");
+            }
+            RunOutcome::Failed { reason } => {
+                let _ = writeln!(out, "**Error**: {reason}.");
             }
         }
     }
+}
+
+fn stretch_details(out: &mut String, c: &Compared) {
+    out.push_str(
+        "| stretch | from (s) | after | impacts (ours) | rapier | worst figure | at | difference | tolerance | ok |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for (k, s) in c.stretches.iter().enumerate() {
+        let worst = s
+            .comparison
+            .figures
+            .iter()
+            .max_by(|a, b| a.ratio().total_cmp(&b.ratio()));
+        let (name, at, diff, tol) =
+            worst.map_or(("-".into(), "-".into(), "-".into(), "-".into()), |f| {
+                (
+                    format!("{} ({})", f.kind.name(), f.kind.unit()),
+                    f.at.clone(),
+                    sci(f.diff),
+                    sci(f.tol),
+                )
+            });
+        let _ = writeln!(
+            out,
+            "| {} | {:.6} | {} | {} | {} | {name} | {at} | {diff} | {tol} | {} |",
+            k + 1,
+            s.from,
+            s.after,
+            sequence_list(&s.comparison, true),
+            if s.comparison.sequence_match {
+                "same".to_string()
+            } else {
+                format!("**{}**", sequence_list(&s.comparison, false))
+            },
+            if s.pass() { "yes" } else { "**no**" }
+        );
+    }
+    out.push_str(
+        "\nThe impacts' own differences (the last impact of each stretch), against their \
+         by-design bounds (the ball where the velocity's ratio is worst):\n\n| stretch | impact \
+         (ball) | change of velocity: ours | rapier | difference | bound | change of spin: ours | \
+         rapier | difference | bound |\n|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for (k, s) in c.stretches.iter().enumerate() {
+        let v = s.comparison.figure(FigureKind::VelocityChange);
+        let w = s.comparison.figure(FigureKind::SpinChange);
+        if let (Some(v), Some(w)) = (v, w) {
+            let _ = writeln!(
+                out,
+                "| {} | {} | {:.4} | {:.4} | {} | {} | {:.3} | {:.3} | {} | {} |",
+                k + 1,
+                v.at,
+                v.ours,
+                v.rapier,
+                sci(v.diff),
+                sci(v.tol),
+                w.ours,
+                w.rapier,
+                sci(w.diff),
+                sci(w.tol)
+            );
+        }
+    }
+    let _ = writeln!(
+        out,
+        "\nWhole shot (information): {}. rapier: {}.",
+        information_cell(&c.whole),
+        sequence_list(&c.whole, false)
+    );
 }
 
 fn statistics(out: &mut String, report: &Report) {
@@ -348,7 +574,7 @@ fn convergence(out: &mut String, report: &Report) {
     out.push_str(CONVERGENCE);
     let _ = write!(out, "\n| dt (s) |");
     for f in FIGURES {
-        let _ = write!(out, " {f} |");
+        let _ = write!(out, " {} |", f.name());
     }
     out.push_str(" passed | time (s) |\n|---|");
     for _ in FIGURES {
@@ -383,41 +609,107 @@ Every scene of `validation/scenes/` is simulated by our event-driven engine and 
   μ_s, no bounce; ball-ball e and, with friction, μ_bb; cushion e_e and, with friction, μ_w.
   In the frictionless limit the ball-ball and cushion friction are zero.
 - **What rapier lacks**, applied as external loads every step: rolling resistance (force
-  −Mμ_r g v̂ and torque −(Iμ_r g/R) e_z × v̂ on a rolling ball, which keeps it rolling while it
-  decelerates at μ_r g, thesis §2.4.2) and the cloth's resistance to sidespin (torque −I·22 rad/s²
-  about the vertical, thesis §5.3), each clamped so that a step never reverses the motion.
-  rapier's friction model is set to Coulomb (one friction cone per contact, no twist constraint),
-  contact recycling off.
+  −Mμ_r g v̂ and torque −(Iμ_r g/R') e_z × v̂ on a rolling ball, R' = R − δ/2 the arm of rapier's
+  contact point, which keeps it rolling while it decelerates at μ_r g, thesis §2.4.2) and the cloth's resistance to sidespin (torque −I·22 rad/s²
+  about the vertical, thesis §5.3) on a ball on the cloth (in the air the spin is frozen,
+  §6.1.6), each clamped so that a step never reverses the motion. rapier's friction model is set
+  to Coulomb (one friction cone per contact, no twist constraint), contact recycling off.
+- **Resting depth.** rapier's contacts are soft: a resting ball sinks δ into the cloth, the
+  static deflection g/(2π·60 Hz)² = 6.9×10⁻⁵ m of its contact spring (measured once on a ball
+  left to settle until its depth stops changing, which takes about 3.5 s: rapier corrects
+  penetration through the positions, so a sinking ball's velocity reads zero). Every ball on the
+  cloth is placed at that depth.
 
-From each engine's run the same record is taken: the impacts in order (ball pairs, cushions or
-jaws by name, pots by pocket), their times, every involved ball's velocity and spin just after,
-the slide-to-roll times and speeds, and the final positions. rapier's events are read from its
+From each engine's run the same *shot digest* is taken (`validation/src/digest.rs`): the
+impacts in order (ball pairs, cushions or jaws by name, pots by pocket, landings of airborne
+balls), their times, every involved ball's velocity and spin just before and just after, the
+slide-to-roll times and speeds, and the final positions. rapier's events are read from its
 steps: an impact starts in the step in which a contact first carries an impulse (its time is
-where the gap before the step, closing at the approach speed, reaches zero); a ball rolls while
-its cloth contact sticks (friction below the Coulomb limit) with a slip below one step's worth
-(3.5 μ_s g dt); a pot is the step in which the ball overlaps a pocket sensor. Both records are
-reduced to what both can resolve: contacts closing slower than 2 mm/s (twice our engine's
-micro-collision speed `MIN_SEPARATION`) are resting contacts, and repeats of one contact within
-two steps are one impact.
+where the gap before the step, closing at the approach speed, reaches zero; its state before is
+the one at the start of that step, its state after the one at the end of the last step in which
+the contact pushes); a ball lands in the step in which its cloth contact pushes again after a
+flight (its state after is the one once the soft cloth has stopped its fall, a few steps
+later); a ball rolls while its cloth contact sticks (friction below the Coulomb limit) with a
+slip below one step's worth (3.5 μ_s g dt); a ball is pocketed when it overlaps a pocket
+sensor, and since rapier finds overlaps at the start of a step, before it moves the bodies, the
+crossing of the fall circle is interpolated back over the step before. Both digests are reduced to what both can resolve: contacts closing slower than
+2 mm/s (twice our engine's micro-collision speed `MIN_SEPARATION`) are resting contacts, and
+repeats of one contact within two steps are one impact.
 
-**Time step.** dt = 10⁻⁴ s, from the study at the end: halving the step from 4×10⁻⁴ s
-halves the largest differences (the step's share dominates), from 10⁻⁴ s on a halving changes
-them by a third or less and far inside their tolerances (the soft contact's share, which does
-not depend on dt, dominates), and the whole set takes about 15 s, which keeps the integration
-tests (`validation/tests/crosscheck.rs`) within the CI budget.
+**Time step.** dt = 10⁻⁴ s, from the study at the end. The largest differences over the set
+are set by shares that do not depend on the step (the soft contact's: slow and grazing
+impacts, the sink's shift of a rolling speed), which stay put as dt halves, except the velocity
+after a curved impact (a jaw, a ball pair), whose share is the turn of the contact's normal
+over one step and shrinks with dt, well within its tolerance at 10⁻⁴ s. Every run passes at
+every step of the study; a finer step would multiply the runtime for no verdict it changes,
+and 10⁻⁴ s keeps the integration tests (`validation/tests/crosscheck.rs`) within the CI
+budget.
 
-The verdict of a run passes when the impact sequences are identical and every figure is within
-its tolerance; `snooker validate` exits non-zero otherwise.
+## How a verdict is reached: whole shot or stretch by stretch
+
+A run is compared over the whole shot when none of its impacts differs by design between the
+engines, and stretch by stretch when one does.
+
+**Frictionless impacts: the whole shot.** In the frictionless limit both engines' impacts are
+the same law (Newton's and the energetic restitution coincide; physics.md, "Analytic limits"),
+so the runs differ only by the time step and the soft contact, and those differences stay
+small as they are carried through the shot. The verdict passes when the impact sequences are
+identical and every figure is within its tolerance, accumulated over the whole shot (below).
+This is the stronger test where it applies: it checks the impacts themselves and how errors
+propagate through them. (A frictionless run with a landing, `jump-*`, goes stretch by stretch:
+the landing differs by design, below.)
+
+**Frictional impacts: stretch by stretch.** With friction the two engines' impact models
+differ by design (ours: energetic restitution, Coulomb friction integrated over the normal
+impulse with its slip directions free to turn, thesis §6.1, §6.2; rapier: Newton's restitution,
+Coulomb friction resolved once per step). The difference is bounded only by the friction
+impulse, a good part of the approach speed (about 1 m/s for a hard cushion impact). Carried
+forward it swamps every later figure (the whole-shot tolerances after one frictional impact
+reach metres of final position), and a rebound a few degrees apart sends a ball near a corner
+to another cushion (issue 11; the scenes `corner-*` show it: the whole-shot comparison, the
+former method, fails them on the sequence). A whole-shot comparison can then
+neither see an error in a motion law after the first impact nor tell a different sequence
+from an error. So each run with friction is cut at every impact whose models differ by design
+(every ball-ball and cushion or jaw impact, and every landing) and rapier is **re-seeded** from
+our engine's state just after it: every ball's position, velocity and spin (a ball on the
+cloth at the depth rapier's balls rest in it; a rolling ball rolling on rapier's contact point,
+at mid-depth, so that it does not start with a slip of δ/2R of its speed; an airborne ball at
+its height; pocketed balls out of play). Each stretch between two cuts is then compared on its
+own:
+
+- the impact that ends it (the *detection of the next event*) must be the same in both, and
+  so must any pot before it; its time, the slide-to-roll transitions within the stretch and the
+  velocities and spins **just before** the impact are checked against the derived tolerances,
+  accumulated from zero at the start of the stretch (the *motion laws* over the stretch); the
+  last stretch, which ends at rest, checks the final positions;
+- the **impact's own difference**, the change of each ball's velocity and spin across it in
+  one engine against the other, is measured against its by-design bound (below).
+
+So every impact's difference is measured, and every motion law and every detection is checked
+over the whole shot, stretch after stretch, without the by-design differences of earlier
+impacts in the way. The whole-shot comparison of these runs is still made and reported as
+information (no verdict). The verdict passes when every stretch passes; `snooker validate`
+exits non-zero when any run fails.
+
+What this cannot see: an error in a frictional impact smaller than what friction may explain
+(for example a wrong direction of the friction impulse) is within the by-design bound; the
+impact models are checked against the thesis's measurements and analytic limits elsewhere
+(`tests/impact_models.rs`). What it does see is shown by errors planted in our engine
+(`validation/tests/crosscheck.rs`): a 2 % error in restitution or rolling resistance fails the
+whole-shot comparison; a 2 % error in rolling resistance from the first cushion impact on fails
+a stretch (the whole-shot tolerances after that impact are far too wide for it); a cushion
+impact resolved twice over fails its impact-difference bound.
 
 ## Tolerances, derived
 
-Each tolerance is computed event by event from our engine's record and the known differences
+Each tolerance is computed event by event from our engine's digest and the known differences
 between the runs; none is a fitted number. With a_s = μ_s g, a_r = μ_r g:
 
-- **Time step.** rapier resolves every discrete change (impact, start of rolling, pot) at a step
-  boundary: each may shift by one step dt, and within a step the cloth's friction changes a speed
-  by up to a_s dt and a sliding ball's spin by 5a_s dt/2R. rapier's state after an impact is the
-  state at the end of that step.
+- **Time step.** rapier resolves every discrete change (impact, landing, start of rolling, pot)
+  at a step boundary: each may shift by one step dt, and within a step the cloth's friction
+  changes a speed by up to a_s dt and a sliding ball's spin by 5a_s dt/2R. rapier's state after
+  an impact is the state at the end of its last step, its state before the one at the start of
+  its first.
 - **Soft contact.** A ball sinks δ into rapier's cloth (the largest depth seen in the run,
   about 6.9×10⁻⁵ m: the static deflection g/(2π·60 Hz)² of rapier's contact spring against a
   fixed body) and rapier puts the contact point at mid-depth: the ball rolls on R' = R(1 − ε),
@@ -430,22 +722,49 @@ between the runs; none is a fitted number. With a_s = μ_s g, a_r = μ_r g:
   equal masses) plus a_s times its time error; a ball rolling to rest from speed v with a speed
   error dv stops v dv/a_r further or shorter and up to (v²/2a_r)(dv/v) to the side, and a time
   error t' of the start of its roll moves it by v t'. The bounds accumulate in time order over
-  all balls (conservatively).
+  all balls (conservatively): over the whole shot, or from zero at the start of each stretch.
+  The state just before an impact is allowed the accumulated share alone; the state after it
+  also the models' difference below.
+- **Cushions at the nose height under a sunk ball.** A ball resting δ lower meets a nose whose
+  contact normal is tilted by θ when its centre is δ tan θ nearer the nose line in plan: the
+  impact comes up to δ tan θ/v_n later (v_n the plan approach speed), which matters only for a
+  grazing approach.
+- **Curved contacts** (ball pairs, jaws; ρ the distance between the centres at the touch, 2R or
+  r_j + R cos θ in plan). rapier takes a contact's normal from the positions at the start of the
+  step, up to one step's relative travel before the touch: turned by up to v_t dt/ρ (v_t the
+  relative speed across the normal). A path offset sideways by h meets the contact with its
+  normal turned by h|v|/(ρ v_n); h accumulates from the velocity errors that may point anywhere
+  (those passed on by impacts; a slide's end changes a speed along the path) over the travel
+  since. A normal turned by φ moves the velocities after by up to k(1 + e)(v_n + v_t)φ, k = 1/2
+  for a ball pair (equal masses), 1 at a jaw. Grazing contacts amplify errors: a path a fraction
+  of a millimetre aside meets a jaw with its normal turned by degrees.
 - **Level cushions under a sunk ball.** The sunk ball meets a level cushion slightly below its
   axis: the normal tilts by δ/(R + r_c), giving a vertical velocity of up to (1 + e)v_n δ/(R + r_c).
-- **With friction (by design).** Newton's restitution with Coulomb friction resolved
-  once per time step (rapier) against energetic restitution with Coulomb friction integrated
-  over the normal impulse, its slip directions free to turn (ours, thesis §6.1, §6.2): each engine's friction impulse is at most μ times the normal impulse, so
-  the velocities after an impact may differ by up to twice that (2μ(1 + e)v_n/2 for a ball pair,
-  2(μ_w + μ_s sin θ)(1 + e)v_n/cos θ at a cushion) and the spins by 5/2R times it; the difference
-  is carried forward like any other. These runs measure the difference; their bound only
-  catches a difference no friction can explain.
+- **Landing.** Until it touches, an airborne ball's vertical velocity changes at g: rapier's state
+  at the start of the landing step differs from ours at the touch by up to g dt.
+- **Landing (by design).** Our engine neglects the cloth's friction percussion when an airborne
+  ball lands (thesis §6.1.6); rapier's cloth, which does not bounce, applies up to μ_s times the
+  normal impulse M v_z: the velocities after differ by up to μ_s v_z and the spins by 5/2R times
+  it, with any impact models.
+- **With friction (by design).** Each engine's friction impulse is at most μ times the normal
+  impulse, so the velocities after an impact may differ by up to twice that (2μ_bb(1 + e)v_n/2
+  for a ball pair, 2(μ_w + μ_s sin θ)(1 + e)v_n/cos θ at a cushion, the normal impulse along the
+  tilted normal being (1 + e)v_n/cos θ per unit mass) and the spins by 5/2R times it.
+- **An impact's own difference.** The two engines' changes of velocity across one impact may
+  differ by the by-design part above, plus what their slightly different incoming states explain
+  (the normal impulse is linear in the approach speed: an incoming velocity difference d changes
+  it by at most (1 + e)d per unit mass, times (1 + μ) with its friction; for a ball pair both
+  balls' differences add up; at a cushion divided by cos θ), plus the turn of a curved contact's
+  normal above, plus the cloth's friction a_s (and gravity for a landing) over the time the
+  impact spans in rapier (from the start of its first step to the end of its last); the spins
+  by 5/2R times the friction parts and the sidespin rate over that time.
 
 ## By-design differences
 
 - **Restitution.** In the frictionless limit Newton's and the energetic (Stronge) restitution
-  coincide, so both engines must agree to the tolerances above. With friction they differ by
-  design; those runs report the measured difference.
+  coincide, so both engines must agree to the tolerances above over the whole shot. With
+  friction they differ by design: those runs are compared stretch by stretch, each impact's
+  difference against its bound.
 - **Cushion contact height in the frictionless limit.** rapier applies restitution once per
   step, after its solve, one contact at a time (an end-of-step restitution pass in the manner
   of Box2D). At a nose at 7R/5 the bounce along the tilted normal pushes the ball into the
@@ -455,6 +774,15 @@ between the runs; none is a fitted number. With a_s = μ_s g, a_r = μ_r g:
   friction a level contact is the same impact (the nose's push plus the cloth's reaction is a
   horizontal impulse through the centre either way), so the frictionless runs use level
   cushions; the runs with friction, where the contact height matters, use the nose at 7R/5.
+- **Landing.** Our engine neglects the landing's friction percussion (thesis §6.1.6), rapier's
+  cloth has it; the landing is a cut of the frictional runs and its bound is part of the
+  frictionless runs' propagated tolerances. Our airborne balls meet cushions and pockets by
+  their plan position (README, "Known limitations"); the scenes keep airborne balls clear of
+  them.
+- **Hypersensitive shots.** Where a grazing contact amplifies the step's share (a ball glancing
+  off one jaw into the other, rattling in a corner's jaws) the tolerances after it grow to
+  metres and the sequences part: such a shot is chaotic and is not in the verdict set (tried:
+  a ball along the middle pocket's mouth from jaw to jaw; a rattle in a corner's jaws).
 - **Touching balls.** Our engine resolves a pack as a sequence of pairwise impacts; rapier solves
   all contacts of a step together. The break-off is compared up to the first impact on the
   pack (which ball, when), not the states after it; its outcome is chaotic and is compared
@@ -484,6 +812,8 @@ part of the bounce to the cloth (see \"By-design differences\"), which is why th
 comparison uses level cushions.\n";
 
 const CONVERGENCE: &str = "The scene set in the frictionless limit at halving time steps: the \
-largest difference between the engines of each figure over all scenes (the break-off's first \
-impact included). The differences shrink with dt until the soft contact's share (the sink, \
-independent of dt) dominates; the default step is where they have settled.\n";
+largest difference between the engines of each figure over the scenes compared over the whole \
+shot (the break-off's first impact included; the `jump-*` scenes, compared stretch by stretch \
+because their landing differs by design, count in the verdicts only). A figure whose largest \
+difference stays put as dt halves is set by a share that does not depend on the step (the \
+soft contact's); one that shrinks, by the step's.\n";

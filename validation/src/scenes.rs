@@ -33,6 +33,16 @@ pub const BUILTIN: &[(&str, &str)] = scene_files!(
     "cut-60",
     "combination",
     "break-off",
+    "corner-topspin-side",
+    "corner-backspin-side",
+    "corner-backspin-side-jaws",
+    "jaw-middle-spin",
+    "jaw-corner-slow",
+    "jaw-corner-pot",
+    "hop-follow",
+    "hop-screw",
+    "jump-backspin-side",
+    "jump-topspin-side",
 );
 
 /// The impact models a scene is run with.

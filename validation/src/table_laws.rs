@@ -32,14 +32,18 @@ impl Load {
     }
 }
 
-/// Rolling resistance on a rolling ball with horizontal velocity `vel`, for a step of `dt`.
+/// Rolling resistance on a rolling ball with horizontal velocity `vel`, for a step of `dt`,
+/// the ball rolling on a contact point `arm` below its centre (R on a rigid cloth; rapier's
+/// soft contact puts it at mid-depth, R - sink/2).
 ///
 /// The law (thesis §2.4.2, mu_r from §5.1.1.1): the centre decelerates at mu_r g along its
-/// path while the ball keeps rolling, w = (e_z x v) / R. Differentiating both: the load is
-/// F = -M mu_r g v^ through the centre and T = -(I mu_r g / R) (e_z x v^), which keeps the
-/// contact point at rest without any help from the cloth's friction. Within the last step of
-/// the roll the load is scaled down to stop the ball exactly.
-pub fn rolling_resistance(vel: Vec3, p: &Params, dt: f64) -> Load {
+/// path while the ball keeps rolling, w = (e_z x v) / arm. Differentiating both: the load is
+/// F = -M mu_r g v^ through the centre and T = -(I mu_r g / arm) (e_z x v^), which keeps the
+/// contact point at rest without any help from the cloth's friction (with the arm R on a sunk
+/// ball the cloth's static friction would make up the difference and the ball would
+/// decelerate at mu_r g (1 - 2 sink / 7R) instead). Within the last step of the roll the load
+/// is scaled down to stop the ball exactly.
+pub fn rolling_resistance(vel: Vec3, p: &Params, dt: f64, arm: f64) -> Load {
     let v = Vec3::new(vel.x, vel.y, 0.0);
     let speed = v.norm();
     if speed == 0.0 {
@@ -49,7 +53,7 @@ pub fn rolling_resistance(vel: Vec3, p: &Params, dt: f64) -> Load {
     let dir = v / speed;
     Load {
         force: -p.ball_mass * decel * dir,
-        torque: -(p.inertia() * decel / p.ball_radius) * Vec3::z().cross(&dir),
+        torque: -(p.inertia() * decel / arm) * Vec3::z().cross(&dir),
     }
 }
 
@@ -76,15 +80,16 @@ mod tests {
     fn rolling_load_keeps_rolling() {
         let p = Params::default();
         let v = Vec3::new(0.6, -0.8, 0.0);
-        let l = rolling_resistance(v, &p, 1e-4);
+        let arm = p.ball_radius - 3.5e-5;
+        let l = rolling_resistance(v, &p, 1e-4, arm);
         let dv = l.force / p.ball_mass;
         let dw = l.torque / p.inertia();
-        // Deceleration mu_r g along -v^, and dw = e_z x dv / R (rolling is kept).
+        // Deceleration mu_r g along -v^, and dw = e_z x dv / arm (rolling is kept).
         assert!((dv.norm() - p.mu_roll * p.g).abs() < 1e-12);
-        assert!((dw - Vec3::z().cross(&dv) / p.ball_radius).norm() < 1e-12);
+        assert!((dw - Vec3::z().cross(&dv) / arm).norm() < 1e-12);
         // Last step: stops the ball exactly.
         let slow = Vec3::new(1e-6, 0.0, 0.0);
-        let l = rolling_resistance(slow, &p, 1e-4);
+        let l = rolling_resistance(slow, &p, 1e-4, p.ball_radius);
         assert!((slow + 1e-4 * l.force / p.ball_mass).norm() < 1e-18);
     }
 

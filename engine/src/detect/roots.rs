@@ -46,10 +46,12 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
     } else {
         Default::default()
     };
-    now.then_some(0.0).into_iter().chain(roots.into_iter().filter(move |&t| {
-        let d = rel.at(t);
-        d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
-    }))
+    now.then_some(0.0)
+        .into_iter()
+        .chain(roots.into_iter().filter(move |&t| {
+            let d = rel.at(t);
+            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+        }))
 }
 
 /// Every time in [0, window], in order, at which a point on the path `plan` (relative to a
@@ -74,7 +76,11 @@ pub fn ring_entries(
     let approaching = move |t: f64| {
         let (_, d, h, p) = distance(t);
         let v = plan.velocity(t);
-        let dd = if d > 0.0 { (p.x * v.x + p.y * v.y) / d } else { 0.0 };
+        let dd = if d > 0.0 {
+            (p.x * v.x + p.y * v.y) / d
+        } else {
+            0.0
+        };
         (d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t) < 0.0
     };
     let now = distance(0.0).0 <= rho + TOUCH_TOL && approaching(0.0);

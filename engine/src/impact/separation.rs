@@ -56,7 +56,10 @@ mod tests {
     #[test]
     fn slow_separations_are_raised_to_the_floor_and_no_further() {
         let n = Vec3::x();
-        let (mut a, mut b) = (ball(Vec3::new(0.3, 0.2, 0.0)), ball(Vec3::new(0.3, -0.1, 0.0)));
+        let (mut a, mut b) = (
+            ball(Vec3::new(0.3, 0.2, 0.0)),
+            ball(Vec3::new(0.3, -0.1, 0.0)),
+        );
         separate_balls(&mut a, &mut b, n);
         assert!(((b.vel - a.vel).dot(&n) - MIN_SEPARATION).abs() < 1e-15);
         // Momentum is kept, the tangential velocities untouched.

@@ -13,7 +13,7 @@ use rand::SeedableRng;
 use rand::rngs::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 use serde::Serialize;
-use snooker_engine::{Motion, Shot, SimOptions, simulate};
+use snooker_engine::{Shot, SimOptions, simulate};
 
 /// Effects outside the catalogue, for testing that the workflow does not mistake them.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

@@ -46,7 +46,11 @@ pub fn contact_in_air(towards: Vec3, p: &Params) -> Impact {
 }
 
 /// State just after the impact of `ball`, in the air, on a nose edge at `towards`.
-pub fn resolve_in_air(ball: &BallState, towards: Vec3, p: &Params) -> Result<BallState, ImpactError> {
+pub fn resolve_in_air(
+    ball: &BallState,
+    towards: Vec3,
+    p: &Params,
+) -> Result<BallState, ImpactError> {
     let k = Kinematics {
         vel: [ball.vel, Vec3::zeros()],
         spin: [ball.spin, Vec3::zeros()],
