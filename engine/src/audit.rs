@@ -8,6 +8,7 @@
 
 use crate::ball::{BallState, Motion};
 use crate::impact::MIN_SEPARATION;
+use crate::motion::cloth::SEGMENT;
 use crate::params::Params;
 use crate::sim::{Ending, EventKind, Setup, Shot};
 use std::cmp::Ordering;
@@ -78,16 +79,40 @@ pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
     out
 }
 
-/// Mechanical energy of the balls `states`, J: kinetic (translation and rotation), potential
-/// above the cloth, and potential along a tilted bed (which the balls' rolling downhill turns
-/// into kinetic energy). Pocketed balls count nothing.
+/// Mechanical energy of the balls `states`, J: kinetic (translation and rotation) while in
+/// play, potential above the cloth, and potential along a tilted bed (which the balls' rolling
+/// downhill turns into kinetic energy). A ball out of play keeps the potential energy of where
+/// it left play, so that leaving play never counts as a gain.
 pub fn energy(states: &[BallState], p: &Params) -> f64 {
-    let bed = |s: &BallState| p.ball_mass * p.g * (p.slope_x * s.pos.x + p.slope_y * s.pos.y);
+    let inertia = p.inertia();
     states
         .iter()
-        .filter(|s| s.motion.in_play())
-        .map(|s| s.energy(p.ball_mass, p.inertia(), p.ball_radius, p.g) - bed(s))
+        .map(|s| {
+            let kinetic = if s.motion.in_play() {
+                0.5 * p.ball_mass * s.vel.norm_squared() + 0.5 * inertia * s.spin.norm_squared()
+            } else {
+                0.0
+            };
+            let height = (s.pos.z - p.ball_radius).max(0.0);
+            let bed = p.slope_x * s.pos.x + p.slope_y * s.pos.y;
+            kinetic + p.ball_mass * p.g * (height - bed)
+        })
         .sum()
+}
+
+/// The most energy the motion between two events `dt` apart may add to `balls` balls, J:
+/// nothing, but for the nap's held acceleration ([`crate::motion::cloth`]). The nap pushes
+/// sideways and so does no work, but the laws hold its direction over segments of at most
+/// [`SEGMENT`] s: over a segment of length tau its work is at most 1/2 M |nap| |a| tau^2,
+/// with |a| <= |nap| + g |slope| + mu_slide g the largest acceleration on the cloth; summed
+/// over segments, at most 1/2 M |nap| |a| SEGMENT dt per ball.
+pub fn motion_allowance(p: &Params, balls: usize, dt: f64) -> f64 {
+    if p.nap_drift == 0.0 {
+        return 0.0;
+    }
+    let a =
+        p.nap_drift.abs() + p.g * p.slope_x.hypot(p.slope_y) + p.mu_slide.max(p.mu_slide_low) * p.g;
+    balls as f64 * 0.5 * p.ball_mass * p.nap_drift.abs() * a * SEGMENT * (dt + SEGMENT)
 }
 
 /// The most energy an event of kind `kind` may add, J. An impact slower than
@@ -103,27 +128,17 @@ pub fn energy_allowance(kind: EventKind, p: &Params) -> f64 {
     0.5 * m_eff * MIN_SEPARATION * MIN_SEPARATION
 }
 
-/// Every ball's state just after event `k` (events at the same instant counted up to `k`).
-pub fn states_after(shot: &Shot, k: usize) -> Vec<BallState> {
-    let e = &shot.events[k];
-    let mut states: Vec<BallState> = shot
-        .tracks
+/// Every ball's state just before the events at time `t`: each track's last segment that
+/// started before `t`, evaluated at `t` (the initial states for `t` = 0).
+fn states_before(shot: &Shot, t: f64) -> Vec<BallState> {
+    shot.tracks
         .iter()
-        .map(|t| t.state_at(e.t, &shot.params))
-        .collect();
-    // Later events at the same instant are already in `state_at`: undo them, latest first.
-    for later in shot.events[k + 1..]
-        .iter()
-        .take_while(|l| l.t == e.t)
-        .collect::<Vec<_>>()
-        .into_iter()
-        .rev()
-    {
-        for (&b, s) in later.balls.iter().zip(&later.before) {
-            states[b] = *s;
-        }
-    }
-    states
+        .map(|tr| {
+            let i = tr.segments.partition_point(|s| s.t < t).max(1) - 1;
+            let seg = &tr.segments[i];
+            crate::motion::state_at(&seg.state, t - seg.t, &shot.params)
+        })
+        .collect()
 }
 
 /// One broken invariant.
@@ -243,39 +258,47 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
     let round = |e: f64| 1e-12 * e.abs().max(1e-3);
     let starts: Vec<BallState> = shot.tracks.iter().map(|t| t.segments[0].state).collect();
     let mut last = energy(&starts, p);
-    for (k, e) in shot.events.iter().enumerate() {
-        let after = states_after(shot, k);
-        for (tr, s) in shot.tracks.iter().zip(&after) {
-            if !s.is_finite() {
-                out.push(Violation::NonFinite {
-                    t: e.t,
-                    ball: tr.id.clone(),
-                });
-            }
-        }
-        let mut before = after.clone();
-        for (&b, s) in e.balls.iter().zip(&e.before) {
-            before[b] = *s;
-        }
-        let (eb, ea) = (energy(&before, p), energy(&after, p));
-        if eb > last + round(last) {
+    let mut last_t = 0.0;
+    // Events at one instant change velocities, not positions: each instant's events are
+    // applied in order from the states just before it, and the positions checked once.
+    let mut k = 0;
+    while k < shot.events.len() {
+        let t = shot.events[k].t;
+        let end = k + shot.events[k..].iter().take_while(|e| e.t == t).count();
+        let mut now = states_before(shot, t);
+        let eb = energy(&now, p);
+        if eb > last + motion_allowance(p, now.len(), t - last_t) + round(last) {
             out.push(Violation::EnergyRose {
                 event: k,
                 rise: eb - last,
             });
         }
-        let allowance = energy_allowance(e.kind, p);
-        if ea > eb + allowance + round(eb) {
-            out.push(Violation::EnergyGain {
-                event: k,
-                kind: e.kind,
-                gain: ea - eb,
-                allowance,
-            });
+        last = eb;
+        last_t = t;
+        for (j, e) in shot.events[k..end].iter().enumerate() {
+            for (&b, s) in e.balls.iter().zip(&e.after) {
+                now[b] = *s;
+                if !s.is_finite() {
+                    out.push(Violation::NonFinite {
+                        t,
+                        ball: shot.tracks[b].id.clone(),
+                    });
+                }
+            }
+            let ea = energy(&now, p);
+            let allowance = energy_allowance(e.kind, p);
+            if ea > last + allowance + round(last) {
+                out.push(Violation::EnergyGain {
+                    event: k + j,
+                    kind: e.kind,
+                    gain: ea - last,
+                    allowance,
+                });
+            }
+            last = ea;
         }
-        last = ea;
-        for (i, a) in after.iter().enumerate() {
-            for (j, b) in after.iter().enumerate().skip(i + 1) {
+        for (i, a) in now.iter().enumerate() {
+            for (j, b) in now.iter().enumerate().skip(i + 1) {
                 if !a.motion.in_play() || !b.motion.in_play() {
                     continue;
                 }
@@ -283,12 +306,13 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
                 if depth > max_overlap {
                     out.push(Violation::Overlap {
                         depth,
-                        t: e.t,
+                        t,
                         balls: (shot.tracks[i].id.clone(), shot.tracks[j].id.clone()),
                     });
                 }
             }
         }
+        k = end;
     }
     if shot.ending == Ending::AtRest {
         for (tr, s) in shot.tracks.iter().zip(shot.final_states()) {

@@ -74,20 +74,25 @@ fn main() -> ExitCode {
     ) {
         bar.set_style(style.progress_chars("=> "));
     }
-    let results: Vec<(u64, generate::Generated, check::Verdict)> = (0..args.scenes)
+    let results: Vec<(u64, generate::Generated, check::Verdict, f64)> = (0..args.scenes)
         .into_par_iter()
         .map(|k| {
             let g = scene(seed, k);
+            let start = std::time::Instant::now();
             let v = check::check(&g);
+            let took = start.elapsed().as_secs_f64();
+            if took > 10.0 {
+                bar.println(format!("scene {k} ({}) took {took:.0} s", g.kind.name()));
+            }
             bar.inc(1);
-            (k, g, v)
+            (k, g, v, took)
         })
         .collect();
     bar.finish_and_clear();
     let mut table: BTreeMap<(Kind, check::Ending, bool), u64> = BTreeMap::new();
     let mut failures = String::new();
     let mut failed = 0;
-    for (k, g, v) in &results {
+    for (k, g, v, _) in &results {
         *table.entry((g.kind, v.ending, v.physical)).or_default() += 1;
         if let Some(f) = &v.failure {
             failed += 1;
@@ -99,7 +104,23 @@ fn main() -> ExitCode {
             );
         }
     }
+    let mut slowest: Vec<(f64, u64, &str)> = results
+        .iter()
+        .map(|(k, g, _, t)| (*t, *k, g.kind.name()))
+        .collect();
+    slowest.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let total: f64 = results.iter().map(|r| r.3).sum();
     println!("seed {seed}: {} scenes, {failed} failing", args.scenes);
+    println!(
+        "time in scenes {total:.1} s (mean {:.2} ms); slowest: {}",
+        1e3 * total / args.scenes.max(1) as f64,
+        slowest
+            .iter()
+            .take(5)
+            .map(|(t, k, kind)| format!("{k} ({kind}) {t:.2} s"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
     println!(
         "{:<14} {:<26} {:>9} {:>9}",
         "kind", "ending", "physical", "other"
