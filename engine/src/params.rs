@@ -13,6 +13,10 @@ use serde::{Deserialize, Serialize};
 /// the ball at h = 7R/5, so the contact normal rises at sin(theta) = 2/5).
 pub const NOSE_HEIGHT_PER_RADIUS: f64 = 1.4;
 
+/// Largest [`Params::cushion_jam`] accepted: the cushion's normal impulse must still stop the
+/// ball at no more than ten times the frictionless impulse's cost.
+pub const MAX_CUSHION_JAM: f64 = 0.9;
+
 /// Thesis §5.1.4: ball speed / cue speed for a centre-ball (stun) strike.
 pub const CENTRE_SPEED_TRANSFER: f64 = 1.45;
 
@@ -308,6 +312,19 @@ impl Params {
         self.ball_radius * (1.0 - s * s).sqrt()
     }
 
+    /// How far the cushion's frictions can push back against the normal impulse of a ball on
+    /// the cloth, as a fraction of it: mu_w tan(theta) + mu_s (tan(theta) + mu_w). The thesis's
+    /// cushion equations (§6.2, dz = 0) give M dv_y/dP_I = -cos(theta) + mu_w sin(Phi)
+    /// sin(theta) - mu_s sin(Phi') (sin(theta) + mu_w sin(Phi) cos(theta)); at its worst the
+    /// approach falls at cos(theta) (1 - this) per unit impulse, and not at all when this
+    /// reaches 1: the rigid contact jams (the Painlevé paradox of Coulomb friction; Stronge,
+    /// *Impact Mechanics*, 2000). The thesis's values give 0.18.
+    pub fn cushion_jam(&self) -> f64 {
+        let s = self.cushion_sin_theta();
+        let tan = s / (1.0 - s * s).sqrt();
+        self.mu_cushion * tan + self.mu_slide.max(self.mu_slide_low) * (tan + self.mu_cushion)
+    }
+
     /// The cushion's restitution for an impact at normal speed `v`, m/s.
     pub fn e_cushion_at(&self, v: f64) -> f64 {
         (self.e_cushion - self.e_cushion_falloff * (v - self.e_cushion_knee).max(0.0)).max(0.0)
@@ -343,6 +360,19 @@ impl Params {
                 reason: format!(
                     "the nose must touch the upper half of the ball: R < h < 2R (R = {r} m), got {} m",
                     self.cushion_height
+                ),
+            });
+        }
+        let jam = self.cushion_jam();
+        if jam > MAX_CUSHION_JAM {
+            return Err(ParamError {
+                name: "mu_cushion",
+                reason: format!(
+                    "with mu_cushion = {}, mu_slide = {} and the nose at {} m the cushion's \
+                     frictions would wedge a ball under the nose: mu_w tan(theta) + mu_s (tan(theta) \
+                     + mu_w) = {jam:.3} must stay below {MAX_CUSHION_JAM} for the rigid cushion \
+                     impact to stop the ball (thesis §6.2)",
+                    self.mu_cushion, self.mu_slide, self.cushion_height
                 ),
             });
         }
@@ -439,6 +469,22 @@ mod tests {
             }
             assert!(!info.source.is_empty() && !info.unit.is_empty());
         }
+    }
+
+    #[test]
+    fn frictions_that_would_jam_the_cushion_are_rejected() {
+        let p = Params::default();
+        assert!(
+            (p.cushion_jam() - 0.182).abs() < 1e-3,
+            "{}",
+            p.cushion_jam()
+        );
+        let jammed = Params {
+            mu_cushion: 1.0,
+            mu_slide: 0.888,
+            ..p
+        };
+        assert_eq!(jammed.validate().unwrap_err().name, "mu_cushion");
     }
 
     #[test]

@@ -46,6 +46,31 @@ impl Kind {
         Kind::Hostile,
     ];
 
+    /// The kind of scene `k`: in every 64 scenes, 10 strikes, 10 adversarial, 8 with given
+    /// motion, 8 airborne, 10 with parameters anywhere in their ranges, 8 break-offs, 8
+    /// hostile and 2 Newton's cradles (the costliest: a cradle of n balls takes about n^3 / 20
+    /// impacts at one instant).
+    pub fn of_scene(k: u64) -> Kind {
+        const SHARES: [(Kind, u64); 8] = [
+            (Kind::Strike, 10),
+            (Kind::Adversarial, 10),
+            (Kind::GivenMotion, 8),
+            (Kind::Airborne, 8),
+            (Kind::Parameters, 10),
+            (Kind::BreakOff, 8),
+            (Kind::Hostile, 8),
+            (Kind::Cradle, 2),
+        ];
+        let mut r = k % 64;
+        for (kind, n) in SHARES {
+            if r < n {
+                return kind;
+            }
+            r -= n;
+        }
+        Kind::Strike
+    }
+
     /// Its name in reports.
     pub fn name(self) -> &'static str {
         match self {
@@ -429,7 +454,13 @@ pub fn generate(kind: Kind, rng: &mut ChaCha8Rng) -> Generated {
         Kind::Cradle => {
             g.scene.open_table = true;
             g.table = Table::open();
-            let n = g.rng.random_range(2..=80);
+            // Mostly short lines; one in ten as long as a full table's length (68 balls) and
+            // beyond.
+            let n = if g.chance(0.1) {
+                g.rng.random_range(41..=80)
+            } else {
+                g.rng.random_range(2..=40)
+            };
             let r = g.r();
             for k in 0..n {
                 let id = g.next_id();

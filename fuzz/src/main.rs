@@ -42,7 +42,7 @@ struct Args {
 /// Scene `k` of run `seed`: its own generator, so any scene can be rerun alone.
 fn scene(seed: u64, k: u64) -> generate::Generated {
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ k.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-    let kind = Kind::ALL[(k % Kind::ALL.len() as u64) as usize];
+    let kind = Kind::of_scene(k);
     generate(kind, &mut rng)
 }
 

@@ -2,21 +2,20 @@
 //! airborne ball can pass over or land on another.
 
 use super::roots::first_entry;
-use crate::ball::BallState;
-use crate::motion;
-use crate::params::Params;
+use crate::motion::Path;
 
-/// First time in [0, window] at which balls `a` and `b` (states at the same instant) touch
-/// while approaching.
-pub fn contact_time(a: &BallState, b: &BallState, window: f64, p: &Params) -> Option<f64> {
-    let rel = motion::path(b, p).minus(&motion::path(a, p));
-    first_entry(&rel, 2.0 * p.ball_radius, window)
+/// First time in [0, window] at which balls on paths `a` and `b` (from the same instant)
+/// touch while approaching; `radius` is the balls' radius.
+pub fn contact_time(a: &Path, b: &Path, window: f64, radius: f64) -> Option<f64> {
+    first_entry(&b.minus(a), 2.0 * radius, window)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ball::{Motion, Vec3};
+    use crate::ball::{BallState, Motion, Vec3};
+    use crate::motion;
+    use crate::params::Params;
 
     #[test]
     fn sliding_ball_hits_resting_ball_where_the_law_says() {
@@ -32,7 +31,8 @@ mod tests {
             &p,
         );
         let red = BallState::at_rest(0.5, 0.01, r);
-        let t = contact_time(&cue, &red, motion::duration(&cue, &p), &p).unwrap();
+        let (a, b) = (motion::path(&cue, &p), motion::path(&red, &p));
+        let t = contact_time(&a, &b, motion::duration(&cue, &p), r).unwrap();
         let at = motion::state_at(&cue, t, &p);
         assert!(((at.pos - red.pos).norm() - 2.0 * r).abs() < 2.0 * crate::detect::SKIN);
     }

@@ -122,6 +122,23 @@ impl Sim<'_> {
         motion::state_at(&b.state, self.now - b.t_ref, self.params())
     }
 
+    /// Ball `i`'s path from now: its current position and velocity, and the acceleration its
+    /// law has held since the law began (with the cloth's effects on, a law holds the
+    /// acceleration of its segment's start, which the current state would not reproduce).
+    fn law_path(&self, i: usize) -> motion::Path {
+        let b = &self.balls[i];
+        let now = self.current(i);
+        motion::Path {
+            c: now.pos,
+            b: if now.motion.is_moving() {
+                now.vel
+            } else {
+                Vec3::zeros()
+            },
+            a: motion::path(&b.state, self.params()).a,
+        }
+    }
+
     /// End of the window in which ball `i`'s position follows its current polynomial.
     fn path_end(&self, i: usize) -> f64 {
         let b = &self.balls[i];
@@ -166,7 +183,7 @@ impl Sim<'_> {
             return;
         }
         let p = *self.params();
-        let path = motion::path(&self.current(i), &p);
+        let path = self.law_path(i);
         let window = law_end.min(self.search_limit()) - self.now;
         let table = &self.setup.table;
         let mut found = Vec::new();
@@ -227,8 +244,9 @@ impl Sim<'_> {
             .min(self.path_end(j))
             .min(self.search_limit());
         let window = end - self.now;
-        let (a, b) = (self.current(i), self.current(j));
-        if let Some(t) = detect::ball_ball::contact_time(&a, &b, window, self.params()) {
+        let (a, b) = (self.law_path(i), self.law_path(j));
+        let radius = self.params().ball_radius;
+        if let Some(t) = detect::ball_ball::contact_time(&a, &b, window, radius) {
             self.push(self.now + t, Candidate::BallBall { other: j }, i);
         }
     }
