@@ -31,7 +31,7 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
     let dist0 = c.norm();
     let now = dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0;
     let rho = rho - SKIN;
-    let searched = !now && !(window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window));
+    let searched = !(now || window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window));
     let roots = if searched {
         let quartic = Poly::new([
             c.dot(&c) - rho * rho,
