@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The project's test command: formatting, lints, then every test of the workspace in release
-# mode (physics in a debug build is ~80x slower). Needs cargo, and a TrueType font for the
+# The project's test command: formatting, lints, every test of the workspace in release mode
+# (physics in a debug build is ~80x slower), then 10,000 fuzz scenes. Needs cargo, and a TrueType font for the
 # plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,3 +21,6 @@ fi
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --release -- -D warnings
 cargo test --workspace --release
+# Random and hostile scenes through the scene parser and the engine, every invariant checked
+# (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml.
+cargo run --release -p snooker-fuzz -- --scenes 10000

@@ -45,10 +45,9 @@ fn final_state_hash(shot: &snooker_engine::Shot) -> u64 {
     };
     eat(shot.events.len() as u64);
     for s in shot.final_states() {
-        for v in s.pos.iter().chain(&s.vel).chain(&s.spin) {
-            eat(v.to_bits());
+        for b in s.to_bits() {
+            eat(b);
         }
-        eat(s.motion as u64);
     }
     h
 }

@@ -234,6 +234,12 @@ impl std::fmt::Display for Violation {
     }
 }
 
+/// `violations` as one message, `None` when there are none.
+pub fn report(violations: &[Violation]) -> Option<String> {
+    let texts: Vec<String> = violations.iter().map(|v| v.to_string()).collect();
+    (!texts.is_empty()).then(|| texts.join("; "))
+}
+
 /// Every invariant `shot` breaks at its events: their order, finite states, overlaps deeper
 /// than `max_overlap` between any two balls in play just after each event, the energy at and
 /// between events, and, for a shot that ended at rest, every ball stopped.

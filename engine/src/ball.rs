@@ -150,6 +150,19 @@ impl BallState {
         )
     }
 
+    /// The state to the bit: position, velocity and spin as IEEE 754 bits, then the motion's
+    /// index (for exact comparisons and fingerprints of shots).
+    pub fn to_bits(&self) -> [u64; 10] {
+        let mut out = [self.motion as u64; 10];
+        for (o, v) in out
+            .iter_mut()
+            .zip(self.pos.iter().chain(&self.vel).chain(&self.spin))
+        {
+            *o = v.to_bits();
+        }
+        out
+    }
+
     /// True when every component is finite.
     pub fn is_finite(&self) -> bool {
         self.pos

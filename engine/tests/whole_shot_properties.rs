@@ -81,16 +81,8 @@ fn setup(cells: &[(usize, f64, f64)]) -> Setup {
 /// The invariants at every event ([`snooker_engine::audit::events`]), with contacts found one
 /// skin inside 2R and verified to VERIFY_TOL: no overlap deeper than their sum.
 fn check_events(shot: &Shot) -> Result<(), TestCaseError> {
-    let broken = audit::events(shot, SKIN + VERIFY_TOL);
-    prop_assert!(
-        broken.is_empty(),
-        "{}",
-        broken
-            .iter()
-            .map(|v| v.to_string())
-            .collect::<Vec<_>>()
-            .join("; ")
-    );
+    let broken = audit::report(&audit::events(shot, SKIN + VERIFY_TOL));
+    prop_assert!(broken.is_none(), "{}", broken.unwrap_or_default());
     Ok(())
 }
 

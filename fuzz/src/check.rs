@@ -1,7 +1,7 @@
 //! One scene through the parser and the engine, every invariant checked: how it ended, and
 //! what (if anything) is wrong with it.
 
-use crate::generate::{Generated, Kind, physical_cloth};
+use crate::generate::{Generated, Kind, unphysical_cloth};
 use snooker_engine::audit::{self, MAX_OVERLAP};
 use snooker_engine::{Shot, SimError, simulate};
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -50,6 +50,8 @@ pub struct Verdict {
     pub ending: Ending,
     /// Whether its parameters are a physical cloth's.
     pub physical: bool,
+    /// Why not, if not.
+    pub unphysical: Option<&'static str>,
     /// Why it fails the harness, if it does.
     pub failure: Option<String>,
 }
@@ -72,25 +74,9 @@ fn identical(a: &Shot, b: &Shot) -> bool {
         for e in &s.events {
             v.push(e.t.to_bits());
             v.extend(e.balls.iter().map(|&b| b as u64));
-            for st in &e.after {
-                v.extend(
-                    st.pos
-                        .iter()
-                        .chain(&st.vel)
-                        .chain(&st.spin)
-                        .map(|x| x.to_bits()),
-                );
-            }
+            v.extend(e.after.iter().flat_map(|st| st.to_bits()));
         }
-        for st in s.final_states() {
-            v.extend(
-                st.pos
-                    .iter()
-                    .chain(&st.vel)
-                    .chain(&st.spin)
-                    .map(|x| x.to_bits()),
-            );
-        }
+        v.extend(s.final_states().iter().flat_map(|st| st.to_bits()));
         v
     };
     bits(a) == bits(b)
@@ -108,17 +94,13 @@ pub fn check(g: &Generated) -> Verdict {
         Verdict {
             ending: Ending::Panicked,
             physical: g.physical,
+            unphysical: None,
             failure: Some(format!("panic: {why}")),
         }
     })
 }
 
 fn check_inner(g: &Generated) -> Verdict {
-    let verdict = |ending, physical, failure: Option<String>, _events: usize| Verdict {
-        ending,
-        physical,
-        failure,
-    };
     let scene = match snooker_scene::parse(&g.text, "fuzz.toml") {
         Ok(s) => s,
         Err(e) => {
@@ -129,21 +111,28 @@ fn check_inner(g: &Generated) -> Verdict {
                     (!e.to_string().starts_with("fuzz.toml"))
                         .then(|| format!("the message does not name the file: {e}"))
                 });
-            return verdict(Ending::Rejected, g.physical, failure, 0);
+            return Verdict {
+                ending: Ending::Rejected,
+                physical: g.physical,
+                unphysical: None,
+                failure,
+            };
         }
     };
-    let physical = physical_cloth(&scene.setup.params);
+    let unphysical = unphysical_cloth(&scene.setup.params);
+    let physical = unphysical.is_none();
+    let verdict = |ending, failure| Verdict {
+        ending,
+        physical,
+        unphysical,
+        failure,
+    };
     let first = simulate(&scene.setup, &scene.options);
     let second = simulate(&scene.setup, &scene.options);
     let shot = match (first, second) {
         (Ok(a), Ok(b)) => {
             if !identical(&a, &b) {
-                return verdict(
-                    Ending::AtRest,
-                    physical,
-                    Some("not deterministic".into()),
-                    a.events.len(),
-                );
+                return verdict(Ending::AtRest, Some("not deterministic".into()));
             }
             a
         }
@@ -157,25 +146,16 @@ fn check_inner(g: &Generated) -> Verdict {
                     _ => Some(format!("{} (exit 1): {a}", ending.name())),
                 }
             };
-            return verdict(ending, physical, failure, 0);
+            return verdict(ending, failure);
         }
         (a, b) => {
-            return verdict(
-                Ending::AtRest,
-                physical,
-                Some(format!("not deterministic: {:?} / {:?}", a.err(), b.err())),
-                0,
-            );
+            let why = format!("not deterministic: {:?} / {:?}", a.err(), b.err());
+            return verdict(Ending::AtRest, Some(why));
         }
     };
     let broken = audit::events(&shot, MAX_OVERLAP);
-    let failure = (!broken.is_empty()).then(|| {
-        broken
-            .iter()
-            .take(5)
-            .map(|v| v.to_string())
-            .collect::<Vec<_>>()
-            .join("; ")
-    });
-    verdict(Ending::AtRest, physical, failure, shot.events.len())
+    verdict(
+        Ending::AtRest,
+        audit::report(&broken[..broken.len().min(5)]),
+    )
 }

@@ -98,18 +98,30 @@ pub struct Generated {
     pub physical: bool,
 }
 
-/// True for the frictions of a real cloth: sliding friction at least 0.05, rolling resistance
-/// at least 0.005, sidespin decay at least 5 rad/s^2 (the thesis measured 0.21, 0.0128 and 22,
-/// §5.1, §5.3), and a bed tilt that leaves at least half the rolling resistance to stop a ball
-/// rolling downhill. Anything less is a near-frictionless cloth, on which a ball may still be
-/// moving after `max_time` or run into the event cap: a physical outcome, not a failure.
-pub fn physical_cloth(p: &Params) -> bool {
+/// Why a cloth is not a physical one, if it is not: sliding friction below 0.05, rolling
+/// resistance below 0.005, sidespin decay below 5 rad/s^2 (the thesis measured 0.21, 0.0128
+/// and 22, §5.1, §5.3), or a bed tilt that leaves less than half the rolling resistance to stop
+/// a ball rolling downhill. On such a near-frictionless cloth a ball may still be moving after
+/// `max_time` or run into the event cap: a physical outcome, not a failure.
+pub fn unphysical_cloth(p: &Params) -> Option<&'static str> {
     let tilt = p.slope_x.hypot(p.slope_y);
-    p.mu_slide >= 0.05
-        && p.mu_roll >= 0.005
-        && p.sidespin_decel >= 5.0
-        && 5.0 / 7.0 * tilt <= 0.5 * p.mu_roll
-        && (p.slide_speed_scale == 0.0 || p.mu_slide_low >= 0.05)
+    if p.mu_slide < 0.05 || (p.slide_speed_scale > 0.0 && p.mu_slide_low < 0.05) {
+        Some("sliding friction < 0.05")
+    } else if p.mu_roll < 0.005 {
+        Some("rolling resistance < 0.005")
+    } else if p.sidespin_decel < 5.0 {
+        Some("sidespin decay < 5 rad/s^2")
+    } else if 5.0 / 7.0 * tilt > 0.5 * p.mu_roll {
+        Some("tilt > half the rolling resistance")
+    } else {
+        None
+    }
+}
+
+/// True for the frictions of a real cloth ([`unphysical_cloth`]): every shot on it must end
+/// with every ball at rest, pocketed or off the table.
+pub fn physical_cloth(p: &Params) -> bool {
+    unphysical_cloth(p).is_none()
 }
 
 struct Gen<'a> {

@@ -146,6 +146,24 @@ fn main() -> ExitCode {
             );
         }
     }
+    // Why the cloth was not a physical one, for the shots that did not stop.
+    let mut why: BTreeMap<(check::Ending, &str), u64> = BTreeMap::new();
+    for (_, _, v, _) in &results {
+        if let Some(reason) = v.unphysical
+            && matches!(
+                v.ending,
+                check::Ending::DidNotStop | check::Ending::EventCap
+            )
+        {
+            *why.entry((v.ending, reason)).or_default() += 1;
+        }
+    }
+    if !why.is_empty() {
+        println!("near-frictionless cloths among the shots that did not finish:");
+        for ((ending, reason), n) in &why {
+            println!("  {:<26} {reason:<36} {n:>6}", ending.name());
+        }
+    }
     if failed > 0 {
         if let Err(e) = std::fs::write(&args.out, &failures) {
             eprintln!("error: cannot write {}: {e}", args.out.display());

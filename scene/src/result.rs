@@ -60,18 +60,14 @@ pub fn result_json(scene: &Scene, shot: &Shot) -> Value {
     for (id, s) in ids.iter().zip(shot.final_states()) {
         fin.insert(id.to_string(), state_json(&s));
     }
-    let pots: Vec<Value> = shot
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::BallPocket)
-        .map(|e| json!({"ball": ids[e.balls[0]], "pocket": e.feature, "t": e.t}))
-        .collect();
-    let off_table: Vec<Value> = shot
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::BallOffTable)
-        .map(|e| json!({"ball": ids[e.balls[0]], "cushion": e.feature, "t": e.t}))
-        .collect();
+    // Balls leaving play: {ball, pocket or cushion, t}.
+    let departures = |kind: EventKind, key: &str| -> Vec<Value> {
+        departures(shot, kind)
+            .map(|(ball, feature, t)| json!({"ball": ids[ball], key: feature, "t": t}))
+            .collect()
+    };
+    let pots = departures(EventKind::BallPocket, "pocket");
+    let off_table = departures(EventKind::BallOffTable, "cushion");
     let mut doc = Map::new();
     doc.insert("scene".into(), json!(scene.name));
     doc.insert("events".into(), Value::Array(events));
@@ -159,19 +155,12 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
     let kinds: Vec<String> = by_kind.iter().map(|(k, n)| format!("{k} {n}")).collect();
     let _ = writeln!(out, "events by kind: {}", kinds.join(", "));
     let ids: Vec<&str> = shot.tracks.iter().map(|t| t.id.as_str()).collect();
-    let pots: Vec<String> = shot
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::BallPocket)
-        .map(|e| {
-            format!(
-                "{} in {} at {:.3} s",
-                ids[e.balls[0]],
-                e.feature.as_deref().unwrap_or("?"),
-                e.t
-            )
-        })
-        .collect();
+    let listed = |kind: EventKind, word: &str| -> Vec<String> {
+        departures(shot, kind)
+            .map(|(ball, feature, t)| format!("{} {word} {feature} at {t:.3} s", ids[ball]))
+            .collect()
+    };
+    let pots = listed(EventKind::BallPocket, "in");
     let _ = writeln!(
         out,
         "pots: {}",
@@ -181,19 +170,7 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
             pots.join("; ")
         }
     );
-    let off: Vec<String> = shot
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::BallOffTable)
-        .map(|e| {
-            format!(
-                "{} over {} at {:.3} s",
-                ids[e.balls[0]],
-                e.feature.as_deref().unwrap_or("?"),
-                e.t
-            )
-        })
-        .collect();
+    let off = listed(EventKind::BallOffTable, "over");
     if !off.is_empty() {
         let _ = writeln!(out, "off the table: {}", off.join("; "));
     }
@@ -208,4 +185,12 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
         );
     }
     out
+}
+
+/// The balls that left play by events of `kind`: (ball index, pocket or cushion, time).
+fn departures(shot: &Shot, kind: EventKind) -> impl Iterator<Item = (usize, &str, f64)> {
+    shot.events
+        .iter()
+        .filter(move |e| e.kind == kind)
+        .map(|e| (e.balls[0], e.feature.as_deref().unwrap_or("?"), e.t))
 }

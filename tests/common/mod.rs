@@ -1,7 +1,7 @@
 //! Shared helpers of the command line's integration tests.
 #![allow(dead_code)]
 
-use snooker_engine::audit::audit;
+use snooker_engine::audit::{audit, report};
 use snooker_engine::{Ending, Setup, Shot};
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -26,14 +26,7 @@ pub fn temp_dir(tag: &str) -> PathBuf {
 /// [`snooker_engine::audit`].
 pub fn check_shot(setup: &Setup, shot: &Shot) {
     assert_eq!(shot.ending, Ending::AtRest, "the shot did not end at rest");
-    let broken = audit(setup, shot);
-    assert!(
-        broken.is_empty(),
-        "{}",
-        broken
-            .iter()
-            .map(|v| v.to_string())
-            .collect::<Vec<_>>()
-            .join("; ")
-    );
+    if let Some(broken) = report(&audit(setup, shot)) {
+        panic!("{broken}");
+    }
 }

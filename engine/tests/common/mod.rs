@@ -1,7 +1,7 @@
 //! Shared helpers of the engine's integration tests.
 #![allow(dead_code)]
 
-use snooker_engine::audit::audit;
+use snooker_engine::audit::{audit, report};
 use snooker_engine::{Ball, BallKind, BallState, Ending, Models, Params, Setup, Shot, Table};
 
 /// One cue ball in `state` on the open table with parameters `p`.
@@ -22,14 +22,7 @@ pub fn one_ball_setup(state: BallState, p: Params) -> Setup {
 /// ended with every ball at rest or pocketed, and broke none.
 pub fn check_shot(setup: &Setup, shot: &Shot) {
     assert_eq!(shot.ending, Ending::AtRest, "the shot did not end at rest");
-    let broken = audit(setup, shot);
-    assert!(
-        broken.is_empty(),
-        "{}",
-        broken
-            .iter()
-            .map(|v| v.to_string())
-            .collect::<Vec<_>>()
-            .join("; ")
-    );
+    if let Some(broken) = report(&audit(setup, shot)) {
+        panic!("{broken}");
+    }
 }
