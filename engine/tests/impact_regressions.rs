@@ -1,9 +1,13 @@
-//! Shots that once failed inside an impact, kept as regressions: a valid shot must always
-//! simulate.
+//! Shots and impacts that once failed inside an impact, kept as regressions: a valid shot
+//! must always simulate, and an impact resolve to the solver's accuracy.
 
 use snooker_engine::cue::{self, Cue};
+use snooker_engine::impact::ball_ball::mathavan as bb;
+use snooker_engine::impact::impulse::Kinematics;
+use snooker_engine::impact::sweep::Rng;
 use snooker_engine::{
-    Ball, BallKind, BallState, Models, Params, Setup, SimOptions, SnookerDims, Table, simulate,
+    Ball, BallKind, BallState, Models, Motion, Params, Setup, SimOptions, SnookerDims, Table, Vec3,
+    simulate,
 };
 
 /// The cue ball frozen against two touching reds (a fuzz run's minimal scene), struck at
@@ -59,4 +63,174 @@ fn every_aim_and_speed_of_the_frozen_cluster_simulates() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A ball in the air at `a` meeting a ball on the cloth at `b`: both states as the simulator
+/// handed them to the ball-ball impact.
+fn state(pos: [f64; 3], vel: [f64; 3], spin: [f64; 3], motion: Motion) -> BallState {
+    BallState {
+        pos: Vec3::from(pos),
+        vel: Vec3::from(vel),
+        spin: Vec3::from(spin),
+        motion,
+    }
+}
+
+/// Largest difference (fraction of `v`; spins as R w / v) between two impacts' results.
+fn max_rel_diff(a: &Kinematics, b: &Kinematics, v: f64, r: f64) -> f64 {
+    (0..2)
+        .map(|i| {
+            let dv = (a.vel[i] - b.vel[i]).abs().max();
+            let dw = (a.spin[i] - b.spin[i]).abs().max() * r;
+            dv.max(dw) / v
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Solves the ball-ball impact of `a` on `b` at the default tolerance and converged: an
+/// error unless it resolves in a few phases (no dithering) and to the solver's accuracy.
+fn check_resolves(a: &BallState, b: &BallState) -> Result<(), String> {
+    let p = Params::default();
+    let (r, mass) = (p.ball_radius, p.ball_mass);
+    let out = bb::solve(a, b, &p, None).map_err(|e| e.to_string())?;
+    if out.phases >= 20 {
+        return Err(format!("{} phases", out.phases));
+    }
+    let c = bb::contact(a, b, &p);
+    let k = Kinematics {
+        vel: [a.vel, b.vel],
+        spin: [a.spin, b.spin],
+    };
+    let fine = c
+        .solve_to(&k, r, mass, 1e-13, None)
+        .map_err(|e| e.to_string())?;
+    let err = max_rel_diff(&out.after, &fine.after, (a.vel - b.vel).norm(), r);
+    if err < 1e-6 {
+        Ok(())
+    } else {
+        Err(format!("off the converged solution by {err:e} of V"))
+    }
+}
+
+fn resolves_cleanly(a: &BallState, b: &BallState) {
+    if let Err(e) = check_resolves(a, b) {
+        panic!("{e}");
+    }
+}
+
+#[test]
+fn an_airborne_red_on_a_sliding_red_holds_at_zero_slip() {
+    // Fuzz seed 1, scene 1266 (given motion): red18, in the air, comes down on red16, sliding
+    // on the cloth, at t = 0.0977 s. Failed with "more than 200 phases": once the contact's
+    // slip stopped, the friction the Coulomb solve found to hold it assumed red16 free to lift
+    // (its probes pulled it up), though that friction pressed it on the cloth, so the slip crept
+    // out of zero, slipped back, and so on.
+    resolves_cleanly(
+        &state(
+            [1.020910144829506, 1.5266347116755465, 0.028280633305869374],
+            [16.62811814926919, -0.5857289288561197, 0.06914169158867903],
+            [-0.2663396935822632, 20.374943483609474, 76.62421799925701],
+            Motion::Airborne,
+        ),
+        &state(
+            [1.0722233782503174, 1.5370454287722581, 0.0262],
+            [-0.3191677698744254, -2.365171950673114, 0.0],
+            [7.244029410624234, -12.686202719260091, -16.885166856967775],
+            Motion::Sliding,
+        ),
+    );
+}
+
+#[test]
+fn an_airborne_red_on_a_red_sliding_across_it_holds_at_zero_slip() {
+    // Fuzz seed 1, scene 1267 (airborne): red8, in the air, on red16, sliding on the cloth,
+    // at t = 0.0295 s. Failed with "more than 200 phases", as above.
+    resolves_cleanly(
+        &state(
+            [2.9882182113730758, 1.528305688252166, 0.032892392227677855],
+            [9.10992883644769, -6.102414731365181, 0.28026454878216345],
+            [23.32163199166757, 36.970279276948645, 28.704763892264417],
+            Motion::Airborne,
+        ),
+        &state(
+            [3.0243860306654478, 1.4909846389177057, 0.0262],
+            [-0.6218027582746655, 4.5219802801669875, 0.0],
+            [-45.445454247305975, -12.787551258581418, 24.452105490854084],
+            Motion::Sliding,
+        ),
+    );
+}
+
+#[test]
+fn an_airborne_red_on_a_red_at_rest_holds_at_zero_slip() {
+    // Fuzz seed 1, scene 1338 (given motion): red14, in the air, on red3 at rest, at
+    // t = 0.1032 s. Failed with "more than 200 phases", as above.
+    resolves_cleanly(
+        &state(
+            [1.0257644357382554, 1.658623735518804, 0.02816111718230374],
+            [9.71078941778475, 3.907526172956909, 0.020005176355750914],
+            [28.100799021658887, 45.6307310503942, 55.07713572257638],
+            Motion::Airborne,
+        ),
+        &state(
+            [1.0730598666615325, 1.6810971914768669, 0.0262],
+            [0.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            Motion::Stationary,
+        ),
+    );
+}
+
+#[test]
+fn airborne_balls_coming_down_on_balls_on_the_cloth_resolve() {
+    // The family of the three above: a ball in the air, its centre up to 0.4 R above the
+    // other's, strikes a ball at rest or sliding on the cloth, with spins up to 3 V/R, so that
+    // the contact's friction presses the lower ball on the cloth while the slip is held at
+    // zero.
+    let p = Params::default();
+    let r = p.ball_radius;
+    let mut rng = Rng(0x5eed_0a1b_2c3d_4e5f);
+    let (mut failures, mut checked) = (Vec::new(), 0);
+    for case in 0..2000 {
+        let rise = rng.uniform(0.0, 0.4) * r;
+        let plan = rng.uniform(0.0, std::f64::consts::TAU);
+        let horizontal = ((2.0 * r).powi(2) - rise * rise).sqrt();
+        let b_pos = Vec3::new(1.0, 1.0, r);
+        let offset = Vec3::new(horizontal * plan.cos(), horizontal * plan.sin(), rise);
+        let speed = rng.uniform(0.2, 15.0);
+        let towards = -offset.normalize();
+        let a = state(
+            (b_pos + offset).into(),
+            (speed * (towards + rng.vec(0.5))).into(),
+            (speed / r * rng.vec(3.0)).into(),
+            Motion::Airborne,
+        );
+        let sliding = case % 2 == 0;
+        let b = if sliding {
+            let v = Vec3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0.0) * speed;
+            state(
+                b_pos.into(),
+                v.into(),
+                (speed / r * rng.vec(1.0)).into(),
+                Motion::Sliding,
+            )
+        } else {
+            BallState::at_rest(b_pos.x, b_pos.y, r)
+        };
+        let point = |s: &BallState, arm: Vec3| s.vel + s.spin.cross(&(r * arm));
+        if (point(&a, towards) - point(&b, -towards)).dot(&towards) <= 0.0 {
+            continue;
+        }
+        checked += 1;
+        if let Err(e) = check_resolves(&a, &b) {
+            failures.push(format!("case {case}: {e}\n  a {a:?}\n  b {b:?}"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failed:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+    assert!(checked > 1500, "{checked} impacts");
 }

@@ -6,11 +6,15 @@
 // Small dense linear algebra reads best with explicit indices.
 #![allow(clippy::needless_range_loop)]
 
-use super::laws::{Forces, Held, Local, NONE_HELD};
+use super::laws::{Forces, Held, Local, NONE_HELD, Pressed};
 use super::mode::{Friction, Mode, PRIMARY};
 use super::pair::Pair;
 use super::problem::Impact;
 use crate::ball::Vec3;
+
+/// Most sets of pressed balls a Coulomb solve tries: there are four (each ball pressed or
+/// not), and a solve that lands on another set than it assumed moves to that one.
+const SUPPORT_PATTERNS: usize = 4;
 
 /// Solves the small dense system `a x = b` (n <= 6) by Gaussian elimination with partial
 /// pivoting; `None` if it is singular.
@@ -80,7 +84,8 @@ impl Impact {
     }
 
     /// Slip rates (in each contact's tangent basis) of the contacts in `which`, when the
-    /// contacts at zero slip exert the frictions `held`.
+    /// contacts at zero slip exert the frictions `held` and the cloth presses on the bodies
+    /// `pressed` (so that the rates are affine in the frictions).
     fn rates<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],
@@ -88,8 +93,9 @@ impl Impact {
         mode: &Mode,
         held: &Held,
         which: &[usize],
+        pressed: Pressed,
     ) -> [f64; 6] {
-        let forces = self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, held);
+        let forces = self.forces_under::<M, P>(y, loc.slip[PRIMARY], mode, held, pressed);
         let dy = self.derivatives::<M, P>(loc.vn, &forces);
         let mut r = [0.0; 6];
         for (j, &k) in which.iter().enumerate() {
@@ -101,11 +107,28 @@ impl Impact {
         r
     }
 
+    /// The bodies the cloth presses on when the contacts at zero slip exert `held`: a
+    /// primary friction pulling a ball down presses it (thesis §6.1.2).
+    fn pressed_under<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &Held,
+    ) -> Pressed {
+        let fp = self.primary_friction(loc.slip[PRIMARY], mode, held);
+        self.pressed_by::<M, P>(y, self.vertical_forces(fp))
+    }
+
     /// Sets in `held` the frictions that keep the slip rates of the contacts in `which` at
-    /// zero, the other frictions in `held` fixed. The rates are affine in these frictions, so
-    /// this is one small linear solve. For a single contact, also returns its rates at zero
-    /// friction and their change per unit friction along each tangent (what
-    /// [`Impact::creep`] needs, so that it need not probe them again).
+    /// zero, the other frictions in `held` fixed. The cloth's reaction is unilateral, so the
+    /// rates are affine in these frictions only while the cloth presses on the same balls:
+    /// the frictions are solved for with the cloth pressing on `pressed` (one small linear
+    /// solve), and again with the balls they press if those differ (the reaction being
+    /// continuous, frictions that press the balls they were solved for are the answer).
+    /// `pressed` is left as the frictions found press. For a single contact, also returns its
+    /// rates at zero friction and their change per unit friction along each tangent under
+    /// `pressed` (what [`Impact::creep`] needs, so that it need not probe them again).
     fn hold<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],
@@ -113,18 +136,41 @@ impl Impact {
         mode: &Mode,
         held: &mut Held,
         which: &[usize],
+        pressed: &mut Pressed,
+    ) -> Option<Affine> {
+        let mut single = None;
+        for attempt in 0..SUPPORT_PATTERNS {
+            single = self.hold_under::<M, P>(y, loc, mode, held, which, *pressed);
+            let now = self.pressed_under::<M, P>(y, loc, mode, held);
+            if now == *pressed || attempt + 1 == SUPPORT_PATTERNS {
+                break;
+            }
+            *pressed = now;
+        }
+        single
+    }
+
+    /// [`Impact::hold`] with the cloth pressing on `pressed`.
+    fn hold_under<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &mut Held,
+        which: &[usize],
+        pressed: Pressed,
     ) -> Option<Affine> {
         let n = 2 * which.len();
         for &k in which {
             held[k] = Vec3::zeros();
         }
-        let base = self.rates::<M, P>(y, loc, mode, held, which);
+        let base = self.rates::<M, P>(y, loc, mode, held, which, pressed);
         let mut a = [[0.0; 6]; 6];
         for col in 0..n {
             let (j, c) = (col / 2, col % 2);
             let mut probe = *held;
             probe[which[j]] = self.tangents(which[j])[c];
-            let r = self.rates::<M, P>(y, loc, mode, &probe, which);
+            let r = self.rates::<M, P>(y, loc, mode, &probe, which, pressed);
             for row in 0..n {
                 a[row][col] = r[row] - base[row];
             }
@@ -147,12 +193,16 @@ impl Impact {
     }
 
     /// How contact `k`, at zero slip and unable to hold, creeps out of zero (the other
-    /// frictions in `held` fixed). Its slip rate is affine in its friction F: rate = d + B F.
-    /// With Coulomb friction F = -c s (c = mu N) a slip growing as lambda s needs
+    /// frictions in `held` fixed). Its slip rate is affine in its friction F while the cloth
+    /// presses on the same balls (`pressed`; `known`, if given, is that affine map): rate =
+    /// d + B F. With Coulomb friction F = -c s (c = mu N) a slip growing as lambda s needs
     /// (lambda I + c B) s = d with |s| = 1 and lambda >= 0; |(lambda I + c B)^-1 d| falls with
     /// lambda, so lambda is found in a bracket (by Newton's method, safeguarded by bisection;
     /// lambda = 0, the edge of holding, gives the direction opposite to the holding force, so
-    /// friction is continuous there). Returns the friction, the direction and lambda.
+    /// friction is continuous there). A creeping primary friction that presses other balls
+    /// than `pressed` is found again with those (as in [`Impact::hold`]); `pressed` is left as
+    /// it presses. Returns the friction, the direction and lambda.
+    #[allow(clippy::too_many_arguments)]
     fn creep<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],
@@ -160,7 +210,38 @@ impl Impact {
         mode: &Mode,
         held: &Held,
         k: usize,
+        mut known: Option<Affine>,
+        pressed: &mut Pressed,
+    ) -> (Vec3, Vec3, f64) {
+        let mut out = (Vec3::zeros(), Vec3::zeros(), 0.0);
+        for attempt in 0..SUPPORT_PATTERNS {
+            out = self.creep_under::<M, P>(y, loc, mode, held, k, known.take(), *pressed);
+            if k != PRIMARY {
+                // The cloth's friction does not move the balls vertically.
+                break;
+            }
+            let mut with = *held;
+            with[k] = out.0;
+            let now = self.pressed_under::<M, P>(y, loc, mode, &with);
+            if now == *pressed || attempt + 1 == SUPPORT_PATTERNS {
+                break;
+            }
+            *pressed = now;
+        }
+        out
+    }
+
+    /// [`Impact::creep`] with the cloth pressing on `pressed`.
+    #[allow(clippy::too_many_arguments)]
+    fn creep_under<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        loc: &Local,
+        mode: &Mode,
+        held: &Held,
+        k: usize,
         known: Option<Affine>,
+        pressed: Pressed,
     ) -> (Vec3, Vec3, f64) {
         let t = self.tangents(k);
         let mut probe = *held;
@@ -174,12 +255,12 @@ impl Impact {
             at_zero: d,
             per_unit: b,
         } = known.unwrap_or_else(|| {
-            let d6 = self.rates::<M, P>(y, loc, mode, &probe, &[k]);
+            let d6 = self.rates::<M, P>(y, loc, mode, &probe, &[k], pressed);
             let d = [d6[0], d6[1]];
             let mut b = [[0.0; 2]; 2];
             for c in 0..2 {
                 probe[k] = t[c];
-                let r = self.rates::<M, P>(y, loc, mode, &probe, &[k]);
+                let r = self.rates::<M, P>(y, loc, mode, &probe, &[k], pressed);
                 b[0][c] = r[0] - d[0];
                 b[1][c] = r[1] - d[1];
             }
@@ -250,6 +331,8 @@ impl Impact {
     ) -> ([Vec3; 3], [Option<(Vec3, f64)>; 3]) {
         let mut held = [Vec3::zeros(); 3];
         let mut creeping: [Option<(Vec3, f64)>; 3] = [None; 3];
+        // The balls the cloth presses on without the frictions to be found: where to start.
+        let mut pressed = self.pressed_under::<M, P>(y, loc, mode, &held);
         for _ in 0..3 {
             let mut which_at = [0usize; 3];
             let mut n = 0;
@@ -264,7 +347,7 @@ impl Impact {
             }
             // Alone at zero, the contact's rates as `hold` probed them are those `creep` needs
             // (the other frictions are the same).
-            let single = self.hold::<M, P>(y, loc, mode, &mut held, &which_at[..n]);
+            let single = self.hold::<M, P>(y, loc, mode, &mut held, &which_at[..n], &mut pressed);
             let f = self.forces_with::<M, P>(y, loc.slip[PRIMARY], mode, &held);
             let excess = |k: usize| held[k].norm() - self.coefficient(k) * self.normal_force(&f, k);
             let worst = which_at[..n]
@@ -273,7 +356,8 @@ impl Impact {
                 .filter(|&k| excess(k) > 0.0)
                 .max_by(|&a, &b| excess(a).total_cmp(&excess(b)));
             let Some(k) = worst else { break };
-            let (force, dir, lambda) = self.creep::<M, P>(y, loc, mode, &held, k, single);
+            let (force, dir, lambda) =
+                self.creep::<M, P>(y, loc, mode, &held, k, single, &mut pressed);
             held[k] = force;
             creeping[k] = Some((dir, lambda));
         }

@@ -32,6 +32,9 @@ pub(super) struct Forces {
 /// [`Mode::friction`]); unread for contacts that are not at zero.
 pub(super) type Held = [Vec3; 3];
 
+/// Whether the cloth presses on each body (holds it down, with a reaction).
+pub(super) type Pressed = [bool; 2];
+
 /// No contact at zero slip.
 pub(super) const NONE_HELD: Held = [Vec3::new(0.0, 0.0, 0.0); 3];
 
@@ -82,16 +85,16 @@ impl Impact {
         [fp.z - self.normal.z, self.normal.z - fp.z]
     }
 
-    /// The cloth's reaction on body `i` (per unit dP) when the other vertical forces on it
-    /// are `fz`: it holds a ball that is down on the cloth against forces pushing it down, and
-    /// lets it rise freely (a unilateral constraint, thesis §6.1.2; eq. 6.28 for the cushion).
+    /// Which bodies the cloth presses on when the other vertical forces on them are `fz`: a
+    /// ball that is down on the cloth and pushed down (a unilateral constraint, thesis §6.1.2;
+    /// eq. 6.28 for the cushion). One pushed up, or already rising, is free.
     #[inline(always)]
-    fn reaction<const M: usize, P: Pair<M>>(&self, y: &[f64; M], i: usize, fz: f64) -> f64 {
-        if self.bodies[i].on_cloth && P::vel(y, i).z <= 0.0 {
-            (-fz).max(0.0)
-        } else {
-            0.0
-        }
+    pub(super) fn pressed_by<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        fz: [f64; 2],
+    ) -> Pressed {
+        [0, 1].map(|i| self.bodies[i].on_cloth && P::vel(y, i).z <= 0.0 && fz[i] < 0.0)
     }
 
     /// Friction on body 0 at the primary contact under `mode`, its slip being `slip`; `held`
@@ -141,10 +144,41 @@ impl Impact {
     ) -> Forces {
         let primary = self.primary_friction(slip, mode, held);
         let fz = self.vertical_forces(primary);
-        let reaction = [
-            self.reaction::<M, P>(y, 0, fz[0]),
-            self.reaction::<M, P>(y, 1, fz[1]),
-        ];
+        let pressed = self.pressed_by::<M, P>(y, fz);
+        self.forces_given::<M, P>(y, primary, fz, pressed, mode, held)
+    }
+
+    /// [`Impact::forces_with`] with the cloth pressing on the bodies `pressed`, whatever the
+    /// vertical forces: its reaction on each is then affine in the frictions, negative where
+    /// the forces would lift the ball (what the Coulomb solve needs, [`super::coulomb`]).
+    #[inline(always)]
+    pub(super) fn forces_under<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        slip: Vec3,
+        mode: &Mode,
+        held: &Held,
+        pressed: Pressed,
+    ) -> Forces {
+        let primary = self.primary_friction(slip, mode, held);
+        let fz = self.vertical_forces(primary);
+        self.forces_given::<M, P>(y, primary, fz, pressed, mode, held)
+    }
+
+    /// The forces given the primary friction `primary`, the other vertical forces `fz` and
+    /// the bodies the cloth presses on: the reaction that cancels `fz` on those, and the
+    /// cloth's friction.
+    #[inline(always)]
+    fn forces_given<const M: usize, P: Pair<M>>(
+        &self,
+        y: &[f64; M],
+        primary: Vec3,
+        fz: [f64; 2],
+        pressed: Pressed,
+        mode: &Mode,
+        held: &Held,
+    ) -> Forces {
+        let reaction = [0, 1].map(|i| if pressed[i] { -fz[i] } else { 0.0 });
         let cloth = [
             self.cloth_friction::<M, P>(y, 0, reaction[0], mode, held),
             self.cloth_friction::<M, P>(y, 1, reaction[1], mode, held),

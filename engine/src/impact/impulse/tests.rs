@@ -1,7 +1,7 @@
 //! The solver's faster ways against the ways round them, and the pieces' own properties.
 
 use super::events::{Event, K};
-use super::mode::{Friction, Mode};
+use super::mode::{CLOTH, Friction, Mode, PRIMARY};
 use super::pair::{FIXED_DIM, Fixed, Free, N, Pair};
 use super::phase::PhaseLaws;
 use super::solve::Paths;
@@ -294,5 +294,69 @@ fn errors_read_as_before() {
     assert_eq!(
         e.reason(),
         "the bodies are not approaching (normal speed -1.5 m/s)"
+    );
+}
+
+#[test]
+fn held_frictions_keep_their_slips_at_zero_and_creeping_ones_grow_as_found() {
+    // Coulomb's law at zero slip under the cloth's unilateral support (thesis §6.1.2): the
+    // frictions the solve finds for contacts at zero slip, put into the laws themselves (the
+    // cloth pressing on whichever balls those frictions push down), leave a holding contact's
+    // slip rate at zero and, if it is the only contact at zero (the others' frictions then
+    // stay as its creep was found with), grow a creeping one's as lambda times its direction.
+    // The reaction is not affine across a ball's lift-off, so a solve that assumes the wrong
+    // balls pressed gives frictions that do neither.
+    let mut rng = Rng(0x5eed_1234_abcd_0005);
+    let (mut held_checked, mut crept_checked, mut pressed_by_friction) = (0, 0, 0);
+    for case in 0..20_000 {
+        let (c, _) = random_impact(&mut rng, case % 2 == 1);
+        let y = random_state(&mut rng, &c);
+        let mut mode = random_mode(&mut rng);
+        mode.friction[PRIMARY] = Friction::AtZero;
+        for (i, k) in CLOTH.into_iter().enumerate() {
+            mode.friction[k] = match (c.bodies[i].on_cloth, rng.uniform(0.0, 3.0) as usize) {
+                (false, _) | (true, 0) => Friction::Off,
+                (true, 1) => Friction::Slip(Impact::cloth_slip::<N, Free>(&y, i).normalize()),
+                _ => Friction::AtZero,
+            };
+        }
+        let loc = c.local::<N, Free>(&y);
+        let (held, creeping) = c.at_zero::<N, Free>(&y, &loc, &mode);
+        let f = c.forces_with::<N, Free>(&y, loc.slip[PRIMARY], &mode, &held);
+        pressed_by_friction += usize::from(f.reaction.iter().any(|&r| r > 0.0));
+        let rates = c
+            .local::<N, Free>(&c.derivatives::<N, Free>(loc.vn, &f))
+            .slip;
+        let alone = mode
+            .friction
+            .iter()
+            .filter(|&&law| law == Friction::AtZero)
+            .count()
+            == 1;
+        for k in 0..3 {
+            if mode.friction[k] != Friction::AtZero {
+                continue;
+            }
+            let expected = match creeping[k] {
+                None => {
+                    held_checked += 1;
+                    Vec3::zeros()
+                }
+                Some(_) if !alone => continue,
+                Some((dir, lambda)) => {
+                    crept_checked += 1;
+                    lambda * dir
+                }
+            };
+            assert!(
+                (rates[k] - expected).norm() <= 1e-9,
+                "contact {k}: slip rate {:?}, expected {expected:?}\n{c:?}\n{y:?}\n{mode:?}",
+                rates[k]
+            );
+        }
+    }
+    assert!(
+        held_checked > 10_000 && crept_checked > 1000 && pressed_by_friction > 5000,
+        "{held_checked} held, {crept_checked} creeping, {pressed_by_friction} pressed"
     );
 }
