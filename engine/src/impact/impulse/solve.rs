@@ -29,7 +29,9 @@ const WIDEST_ZERO: f64 = 1e-5;
 const DITHER_PHASES: usize = 20;
 /// Most phases of one impact.
 const MAX_PHASES: usize = 200;
-/// Vertical speed (fraction of V) below which a ball at a support event has landed.
+/// Vertical speed (fraction of V) below which a ball at a support event has landed, and
+/// within which a ball on the cloth at the start of a phase is at rest on it: the support
+/// events' own resolution (`impulse/events.rs`).
 const LANDED: f64 = 1e-12;
 
 /// Which of the faster ways through an impact are taken: `reduce`, the state of a ball
@@ -195,6 +197,20 @@ impl Impact {
         })
     }
 
+    /// Sets to zero the vertical speed of each ball on the cloth that is within [`LANDED`] of
+    /// it. A ball on the cloth is either held down by it or rising (thesis §6.1.2); the
+    /// support event, zero within the same resolution, does not see a ball rising or sinking
+    /// more slowly come back to the cloth, so the phase must not start with one: the cloth
+    /// would start pressing on it mid-phase, with its friction off for the phase.
+    fn land_resting<const M: usize, P: Pair<M>>(&self, y: &mut [f64; M]) {
+        for i in 0..moving_bodies::<M, P>() {
+            let (v, w) = (P::vel(y, i), P::spin(y, i));
+            if self.bodies[i].on_cloth && v.z != 0.0 && v.z.abs() <= LANDED {
+                P::put(y, i, Vec3::new(v.x, v.y, 0.0), w);
+            }
+        }
+    }
+
     /// The phases of the impact from the scaled state `y` (of pair `P`) to the end of
     /// restitution: the final state, and the outcome with scaled impulses (its velocities are
     /// left for the caller).
@@ -221,6 +237,7 @@ impl Impact {
             if phases % DITHER_PHASES == 0 {
                 zero = (10.0 * zero).min(WIDEST_ZERO);
             }
+            self.land_resting::<M, P>(&mut y);
             let mode = self.mode_at::<M, P>(&y, compressing, w_target, zero);
             let ph = self.integrate_phase::<M, P>(&mode, p, y, h, tol, paths.establish, |x, yy| {
                 if recorder.trace.is_some() {
