@@ -52,6 +52,15 @@ impl Motion {
         matches!(self, Motion::Sliding | Motion::Rolling | Motion::Airborne)
     }
 
+    /// True once the ball will not change by itself: at rest on the cloth, pocketed or off
+    /// the table (a ball spinning on the spot has not stopped).
+    pub fn has_stopped(self) -> bool {
+        matches!(
+            self,
+            Motion::Stationary | Motion::Pocketed | Motion::OffTable
+        )
+    }
+
     /// True while the ball is on the table (not pocketed, not off the table).
     pub fn in_play(self) -> bool {
         !matches!(self, Motion::Pocketed | Motion::OffTable)

@@ -22,6 +22,7 @@
 use crate::ball::{BallState, Vec3};
 use crate::motion;
 use crate::params::Params;
+use crate::sim::setup::{MAX_BALL_SPEED, MAX_SPIN_SPEED};
 use serde::{Deserialize, Serialize};
 
 /// Fastest cue speed accepted, m/s (the fastest human breaks reach about 10 m/s).
@@ -199,6 +200,19 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
     let mut out = *ball;
     out.vel += Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
     out.spin += contact.cross(&impulse) / inertia;
+    // The strike's result must be a ball the engine takes (a heavy cue at the top speed
+    // gives more): blamed on the cue speed, the input that made it.
+    let (speed, surface) = (out.vel.norm(), out.spin.norm() * r);
+    if speed > MAX_BALL_SPEED || surface > MAX_SPIN_SPEED {
+        return Err(err(
+            "speed",
+            format!(
+                "the strike gives the ball {speed:.1} m/s and a spin surface speed of \
+                 {surface:.1} m/s, beyond any shot (at most {MAX_BALL_SPEED} and \
+                 {MAX_SPIN_SPEED} m/s): strike more slowly or with a lighter cue"
+            ),
+        ));
+    }
     let out = motion::settle(out, p);
     let dv = Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
     let squirt = heading.cross(&dv).z.atan2(heading.dot(&dv));

@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release -p snooker-fuzz -- --scenes 10000 [--seed S] [--out failures.toml]`
 //! (a fresh seed, printed, when none is given). `--only K --seed S` reruns scene K alone and
-//! prints its scene file.
+//! prints its scene file; `--from K` starts at scene K (a long run in parts).
 
 mod check;
 mod generate;
@@ -34,6 +34,10 @@ struct Args {
     /// File the failing scenes are written to.
     #[arg(long, default_value = "fuzz-failures.toml")]
     out: PathBuf,
+    /// Index of the first scene: `--from K --scenes N` runs scenes K..K+N of the seed, so a
+    /// long run can be done in parts (each scene has its own generator).
+    #[arg(long, default_value_t = 0, value_name = "K")]
+    from: u64,
     /// Run scene K alone and print its file.
     #[arg(long, value_name = "K")]
     only: Option<u64>,
@@ -67,14 +71,16 @@ fn main() -> ExitCode {
         );
         return ExitCode::SUCCESS;
     }
-    eprintln!("fuzz: {} scenes, seed {seed}", args.scenes);
-    let bar = ProgressBar::new(args.scenes);
+    let (first, end) = (args.from, args.from.saturating_add(args.scenes));
+    eprintln!("fuzz: scenes {first}..{end} of seed {seed}");
+    let bar = ProgressBar::new(end - first);
     if let Ok(style) = ProgressStyle::with_template(
         "{elapsed_precise} [{bar:40}] {pos}/{len} scenes ({per_sec}) {msg}",
     ) {
         bar.set_style(style.progress_chars("=> "));
     }
-    let results: Vec<(u64, generate::Generated, check::Verdict, f64)> = (0..args.scenes)
+    // A scene's text is kept only if it fails: a run of 10^6 scenes must fit in memory.
+    let results: Vec<(u64, Kind, check::Verdict, f64, Option<String>)> = (first..end)
         .into_par_iter()
         .map(|k| {
             let g = scene(seed, k);
@@ -85,35 +91,39 @@ fn main() -> ExitCode {
                 bar.println(format!("scene {k} ({}) took {took:.0} s", g.kind.name()));
             }
             bar.inc(1);
-            (k, g, v, took)
+            let text = v.failure.is_some().then_some(g.text);
+            (k, g.kind, v, took, text)
         })
         .collect();
     bar.finish_and_clear();
     let mut table: BTreeMap<(Kind, check::Ending, bool), u64> = BTreeMap::new();
     let mut failures = String::new();
     let mut failed = 0;
-    for (k, g, v, _) in &results {
-        *table.entry((g.kind, v.ending, v.physical)).or_default() += 1;
-        if let Some(f) = &v.failure {
+    for (k, kind, v, _, text) in &results {
+        *table.entry((*kind, v.ending, v.physical)).or_default() += 1;
+        if let (Some(f), Some(text)) = (&v.failure, text) {
             failed += 1;
             let _ = writeln!(
                 failures,
                 "# ---- scene {k} of seed {seed} ({}): {f}\n# rerun: cargo run --release -p snooker-fuzz -- --seed {seed} --only {k}\n{}",
-                g.kind.name(),
-                g.text
+                kind.name(),
+                text
             );
         }
     }
     let mut slowest: Vec<(f64, u64, &str)> = results
         .iter()
-        .map(|(k, g, _, t)| (*t, *k, g.kind.name()))
+        .map(|(k, kind, _, t, _)| (*t, *k, kind.name()))
         .collect();
     slowest.sort_by(|a, b| b.0.total_cmp(&a.0));
     let total: f64 = results.iter().map(|r| r.3).sum();
-    println!("seed {seed}: {} scenes, {failed} failing", args.scenes);
+    println!(
+        "seed {seed}: scenes {first}..{end} ({} scenes), {failed} failing",
+        end - first
+    );
     println!(
         "time in scenes {total:.1} s (mean {:.2} ms); slowest: {}",
-        1e3 * total / args.scenes.max(1) as f64,
+        1e3 * total / (end - first).max(1) as f64,
         slowest
             .iter()
             .take(5)
@@ -126,6 +136,17 @@ fn main() -> ExitCode {
         "kind", "ending", "physical", "other"
     );
     for kind in Kind::ALL {
+        let times: Vec<f64> = results
+            .iter()
+            .filter(|r| r.1 == kind)
+            .map(|r| r.3)
+            .collect();
+        let mean_ms = 1e3 * times.iter().sum::<f64>() / times.len().max(1) as f64;
+        println!(
+            "{} ({} scenes, mean {mean_ms:.2} ms)",
+            kind.name(),
+            times.len()
+        );
         let endings: Vec<check::Ending> = {
             let mut e: Vec<_> = table
                 .keys()
@@ -148,7 +169,7 @@ fn main() -> ExitCode {
     }
     // Why the cloth was not a physical one, for the shots that did not stop.
     let mut why: BTreeMap<(check::Ending, &str), u64> = BTreeMap::new();
-    for (_, _, v, _) in &results {
+    for (_, _, v, _, _) in &results {
         if let Some(reason) = v.unphysical
             && matches!(
                 v.ending,

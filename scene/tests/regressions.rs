@@ -137,3 +137,48 @@ fn a_micro_collision_at_a_cushion_adds_no_more_than_its_allowance() {
         hit.after[0]
     );
 }
+
+#[test]
+fn a_restitution_too_small_to_square_ends_like_none() {
+    // Found (hostile, e_ball = 1e-308): e^2 underflows, so restitution searched for a work it
+    // already had: "the impulse grew without bound". It must end as e = 0 does, to the bit.
+    let shot = |e: &str| {
+        let text = format!(
+            r#"
+            params = {{e_ball = {e}}}
+            cue = {{ball = "cue", speed = 14.6, aim = 0.0}}
+            balls = [{{id = "cue", pos = [1.0, 0.9]}}, {{id = "red", pos = [1.5, 0.9]}}]
+            "#
+        );
+        run(&text).1
+    };
+    let (tiny, zero) = (shot("1e-308"), shot("0.0"));
+    assert!(tiny.events.iter().any(|e| e.kind == EventKind::BallBall));
+    let bits = |s: &Shot| -> Vec<u64> {
+        s.final_states()
+            .iter()
+            .flat_map(|st| st.to_bits())
+            .collect()
+    };
+    assert_eq!(bits(&tiny), bits(&zero));
+}
+
+#[test]
+fn a_spin_that_never_decays_never_stops() {
+    // Found (hostile, sidespin_decel = 1e-308): a ball left spinning on the spot for ever was
+    // reported at rest (exit 0). With no decay the shot does not stop.
+    for decel in ["0.0", "1e-308"] {
+        let text = format!(
+            r#"
+            params = {{sidespin_decel = {decel}}}
+            balls = [{{id = "cue", pos = [1.0, 0.9], spin = [0.0, 0.0, 20.0]}}]
+            "#
+        );
+        let scene = parse(&text, "regression.toml").unwrap_or_else(|e| panic!("{e}"));
+        let err = simulate(&scene.setup, &scene.options).unwrap_err();
+        assert!(
+            matches!(err, snooker_engine::SimError::DidNotStop { .. }),
+            "decel {decel}: {err}"
+        );
+    }
+}

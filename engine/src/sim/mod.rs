@@ -298,8 +298,9 @@ impl Sim<'_> {
             self.now = self.now.max(h);
             return Ok(Ending::Horizon);
         }
-        // Nothing left to happen: the laws in force never end, so no ball moves.
-        if self.balls.iter().any(|b| b.state.motion.is_moving()) {
+        // Nothing left to happen: a ball not yet stopped is under a law that never ends
+        // (a spin that never decays, with sidespin_decel = 0): the shot did not stop.
+        if self.balls.iter().any(|b| !b.state.motion.has_stopped()) {
             return Err(SimError::DidNotStop {
                 max_time: self.opts.max_time,
             });

@@ -273,7 +273,10 @@ impl Impact {
                     p_c = p;
                     let w_c = y[P::WORK];
                     w_target = (1.0 - self.e * self.e) * w_c;
-                    if self.e == 0.0 {
+                    // Nothing to restore (e = 0, or e so small that e^2 W_c rounds away):
+                    // restitution is over at once, not a phase searching for a crossing of
+                    // the work it already has.
+                    if w_target == w_c {
                         break;
                     }
                 }
