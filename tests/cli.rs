@@ -200,7 +200,17 @@ fn a_missing_file_is_reported() {
 }
 
 #[test]
-fn bad_arguments_exit_with_2() {
-    assert_eq!(snooker(&["simulate", "--bogus"]).status.code(), Some(2));
-    assert_eq!(snooker(&["frobnicate"]).status.code(), Some(2));
+fn bad_arguments_exit_with_2_and_one_line() {
+    // Issue 11: an unknown flag printed clap's seven-line usage.
+    for args in [
+        &["simulate", "--bogus"][..],
+        &["frobnicate"],
+        &["impact", "--speed"],
+    ] {
+        let o = snooker(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("error: "), "{args:?}: {err}");
+    }
 }

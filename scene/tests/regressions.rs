@@ -180,5 +180,11 @@ fn a_spin_that_never_decays_never_stops() {
             matches!(err, snooker_engine::SimError::DidNotStop { .. }),
             "decel {decel}: {err}"
         );
+        // Up to a horizon it is a clean shot that ends there, still spinning.
+        let scene = parse(&format!("{text}\n[sim]\nhorizon = 5.0\n"), "h.toml").unwrap();
+        let shot = simulate(&scene.setup, &scene.options).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(shot.ending, Ending::Horizon);
+        assert_eq!(shot.duration, 5.0);
+        assert_eq!(shot.final_states()[0].motion, Motion::Spinning);
     }
 }

@@ -21,7 +21,7 @@
 //!   circle, by linear interpolation back over the step before.
 
 use crate::digest::{Final, Impact, Parties, Roll, ShotDigest, Velocities};
-use crate::rapier_world::{Body, ImpactFriction, Kinematics, World, WorldConfig, rest_depth};
+use crate::rapier_world::{ImpactFriction, Kinematics, TablePart, World, WorldConfig, rest_depth};
 use crate::shapes::{CushionContact, Feature, TableShapes};
 use crate::table_laws::{rolling_resistance, sidespin_resistance};
 use snooker_engine::{BallState, Motion, Setup, Table, Vec3, motion};
@@ -303,10 +303,10 @@ impl<'a> Rapier<'a> {
     }
 
     /// The parties a touch stands for, if it is an impact.
-    fn parties_of(&self, ball: usize, other: Body, at: &[Kinematics]) -> Option<Parties> {
+    fn parties_of(&self, ball: usize, other: TablePart, at: &[Kinematics]) -> Option<Parties> {
         match other {
-            Body::Ball(j) => Some(Parties::Balls(ball.min(j), ball.max(j))),
-            Body::Cushion(_) | Body::Jaw(_) => {
+            TablePart::Ball(j) => Some(Parties::Balls(ball.min(j), ball.max(j))),
+            TablePart::Cushion(_) | TablePart::Jaw(_) => {
                 let (f, _, _) = self.shapes.nearest(at[ball].pos)?;
                 let name = feature_name(&self.setup.table, f);
                 Some(match f {
@@ -314,7 +314,7 @@ impl<'a> Rapier<'a> {
                     Feature::Jaw(_) => Parties::Jaw(ball, name),
                 })
             }
-            Body::Cloth | Body::Pocket(_) => None,
+            TablePart::Cloth | TablePart::Pocket(_) => None,
         }
     }
 
@@ -351,6 +351,33 @@ impl<'a> Rapier<'a> {
             .collect()
     }
 
+    /// Records the impact of `c` that began in the step from `t0` (state `before`) and left
+    /// its balls with `after`: its time is where the closing gap ran out, and from there its
+    /// balls slide with `after`. Returns its index.
+    fn begin_impact(
+        &mut self,
+        c: &Parties,
+        t0: f64,
+        before: &[Kinematics],
+        after: Vec<Velocities>,
+    ) -> usize {
+        let dt = self.dt();
+        let (gap, speed) = self.gap_before(c, before);
+        let t = closing_time(t0, gap, speed, dt);
+        for (&i, a) in c.balls().iter().zip(&after) {
+            self.run.tracks[i].slide_from = (t, *a);
+        }
+        self.run.impacts.push(Impact {
+            t,
+            parties: c.clone(),
+            before: Self::velocities_of(c, before),
+            after,
+            end: t0 + dt,
+            approach: speed,
+        });
+        self.run.impacts.len() - 1
+    }
+
     /// Impacts: contacts that start carrying an impulse open an impact; contacts that go on
     /// carrying one update its state after.
     fn note_impacts(&mut self, t0: f64, before: &[Kinematics], now: &[Kinematics]) {
@@ -371,20 +398,8 @@ impl<'a> Rapier<'a> {
                 self.run.impacts[idx].end = t0 + dt;
                 open.push((c, idx));
             } else {
-                let (gap, speed) = self.gap_before(&c, before);
-                let t = closing_time(t0, gap, speed, dt);
-                for (&i, a) in c.balls().iter().zip(&after) {
-                    self.run.tracks[i].slide_from = (t, *a);
-                }
-                self.run.impacts.push(Impact {
-                    t,
-                    parties: c.clone(),
-                    before: Self::velocities_of(&c, before),
-                    after,
-                    end: t0 + dt,
-                    approach: speed,
-                });
-                open.push((c, self.run.impacts.len() - 1));
+                let k = self.begin_impact(&c, t0, before, after);
+                open.push((c, k));
             }
         }
         self.run.open = open;
@@ -397,7 +412,7 @@ impl<'a> Rapier<'a> {
         let settled = self.setup.params.g * dt;
         let mut on_cloth = vec![false; self.world.len()];
         for touch in self.world.touches() {
-            if touch.other == Body::Cloth {
+            if touch.other == TablePart::Cloth {
                 on_cloth[touch.ball] = true;
             }
         }
@@ -427,22 +442,12 @@ impl<'a> Rapier<'a> {
             }
             track.airborne = false;
             let c = Parties::Landing(i);
-            let (gap, speed) = self.gap_before(&c, before);
-            let t = closing_time(t0, gap, speed, dt);
             let after = Self::velocities_of(&c, now);
-            self.run.tracks[i].slide_from = (t, after[0]);
+            let k = self.begin_impact(&c, t0, before, after);
             if now[i].vel.z < -settled {
-                self.run.tracks[i].landing = Some(self.run.impacts.len());
-                self.run.open.push((c.clone(), self.run.impacts.len()));
+                self.run.tracks[i].landing = Some(k);
+                self.run.open.push((c, k));
             }
-            self.run.impacts.push(Impact {
-                t,
-                parties: c.clone(),
-                before: Self::velocities_of(&c, before),
-                after,
-                end: t0 + dt,
-                approach: speed,
-            });
         }
     }
 
@@ -496,7 +501,7 @@ impl<'a> Rapier<'a> {
         let dt = self.dt();
         let mut cloth = vec![None; self.world.len()];
         for touch in self.world.touches() {
-            if touch.other == Body::Cloth {
+            if touch.other == TablePart::Cloth {
                 cloth[touch.ball] = Some(touch);
             }
         }

@@ -13,9 +13,9 @@ use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::*;
 use snooker_engine::{Ball, Params, Table, Vec3};
 
-/// What a collider stands for.
+/// The part of the table (or the ball) a rapier collider stands for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Body {
+pub enum TablePart {
     /// The cloth.
     Cloth,
     /// Ball `i` of the scene.
@@ -28,26 +28,26 @@ pub enum Body {
     Pocket(usize),
 }
 
-impl Body {
+impl TablePart {
     fn encode(self) -> u128 {
         let (tag, i) = match self {
-            Body::Cloth => (0u128, 0usize),
-            Body::Ball(i) => (1, i),
-            Body::Cushion(i) => (2, i),
-            Body::Jaw(i) => (3, i),
-            Body::Pocket(i) => (4, i),
+            TablePart::Cloth => (0u128, 0usize),
+            TablePart::Ball(i) => (1, i),
+            TablePart::Cushion(i) => (2, i),
+            TablePart::Jaw(i) => (3, i),
+            TablePart::Pocket(i) => (4, i),
         };
         (tag << 64) | i as u128
     }
 
-    fn decode(data: u128) -> Body {
+    fn decode(data: u128) -> TablePart {
         let i = (data & u64::MAX as u128) as usize;
         match data >> 64 {
-            1 => Body::Ball(i),
-            2 => Body::Cushion(i),
-            3 => Body::Jaw(i),
-            4 => Body::Pocket(i),
-            _ => Body::Cloth,
+            1 => TablePart::Ball(i),
+            2 => TablePart::Cushion(i),
+            3 => TablePart::Jaw(i),
+            4 => TablePart::Pocket(i),
+            _ => TablePart::Cloth,
         }
     }
 }
@@ -158,20 +158,22 @@ struct ContactRules {
 
 impl ContactRules {
     /// (friction, restitution) for a pair of bodies.
-    fn coefficients(&self, a: Body, b: Body) -> (f64, f64) {
+    fn coefficients(&self, a: TablePart, b: TablePart) -> (f64, f64) {
         let p = &self.params;
         let on = self.impact_friction == ImpactFriction::On;
         let (ball, other) = match (a, b) {
-            (Body::Ball(i), o) | (o, Body::Ball(i)) => (i, o),
+            (TablePart::Ball(i), o) | (o, TablePart::Ball(i)) => (i, o),
             _ => return (0.0, 0.0),
         };
         match other {
             // Thesis §6.1: mu_bb, e (Newton's restitution in rapier, energetic in ours).
-            Body::Ball(_) => (if on { p.mu_ball } else { 0.0 }, p.e_ball),
+            TablePart::Ball(_) => (if on { p.mu_ball } else { 0.0 }, p.e_ball),
             // Thesis §6.2: mu_w, e_e at the nose.
-            Body::Cushion(_) | Body::Jaw(_) => (if on { p.mu_cushion } else { 0.0 }, p.e_cushion),
+            TablePart::Cushion(_) | TablePart::Jaw(_) => {
+                (if on { p.mu_cushion } else { 0.0 }, p.e_cushion)
+            }
             // Thesis §2.4.2: sliding friction mu_s; the cloth does not bounce.
-            Body::Cloth => (
+            TablePart::Cloth => (
                 if self.cloth_friction_off.get(ball).copied().unwrap_or(false) {
                     0.0
                 } else {
@@ -179,15 +181,15 @@ impl ContactRules {
                 },
                 0.0,
             ),
-            Body::Pocket(_) => (0.0, 0.0),
+            TablePart::Pocket(_) => (0.0, 0.0),
         }
     }
 }
 
 impl PhysicsHooks for ContactRules {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
-        let a = Body::decode(ctx.colliders[ctx.collider1].user_data);
-        let b = Body::decode(ctx.colliders[ctx.collider2].user_data);
+        let a = TablePart::decode(ctx.colliders[ctx.collider1].user_data);
+        let b = TablePart::decode(ctx.colliders[ctx.collider2].user_data);
         let (friction, restitution) = self.coefficients(a, b);
         if let Some(m) = ctx.rigid_mut() {
             *m.friction = friction;
@@ -202,7 +204,7 @@ pub struct Touch {
     /// The ball.
     pub ball: usize,
     /// What it touches.
-    pub other: Body,
+    pub other: TablePart,
     /// Normal impulse of the step, N s.
     pub normal_impulse: f64,
     /// Magnitude of the friction impulse of the step, N s.
@@ -266,14 +268,15 @@ impl World {
         };
         add_fixed(
             &mut phys,
-            ColliderBuilder::new(SharedShape::halfspace(Vector::Z)).user_data(Body::Cloth.encode()),
+            ColliderBuilder::new(SharedShape::halfspace(Vector::Z))
+                .user_data(TablePart::Cloth.encode()),
         );
         let shapes = TableShapes::new(table, params, cfg.cushion_contact);
         for (k, c) in shapes.noses.iter().enumerate() {
             add_fixed(
                 &mut phys,
                 ColliderBuilder::capsule_from_endpoints(to_glam(c.a), to_glam(c.b), c.radius)
-                    .user_data(Body::Cushion(k).encode()),
+                    .user_data(TablePart::Cushion(k).encode()),
             );
         }
         for (k, j) in shapes.jaws.iter().enumerate() {
@@ -281,7 +284,7 @@ impl World {
                 &mut phys,
                 ColliderBuilder::ball(j.radius)
                     .translation(to_glam(j.centre))
-                    .user_data(Body::Jaw(k).encode()),
+                    .user_data(TablePart::Jaw(k).encode()),
             );
         }
         let mut pockets = Vec::new();
@@ -290,7 +293,7 @@ impl World {
                 ColliderBuilder::ball(pk.radius)
                     .translation(to_glam(pk.centre))
                     .sensor(true)
-                    .user_data(Body::Pocket(k).encode()),
+                    .user_data(TablePart::Pocket(k).encode()),
                 Some(fixed),
             );
             pockets.push(h);
@@ -310,7 +313,7 @@ impl World {
                 ColliderBuilder::ball(params.ball_radius)
                     .mass(params.ball_mass)
                     .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS)
-                    .user_data(Body::Ball(i).encode()),
+                    .user_data(TablePart::Ball(i).encode()),
                 Some(body),
             );
             slots.push(Slot {
@@ -454,7 +457,7 @@ impl World {
                 } else {
                     pair.collider1
                 };
-                let other = Body::decode(self.phys.colliders[other_handle].user_data);
+                let other = TablePart::decode(self.phys.colliders[other_handle].user_data);
                 let mut normal = 0.0;
                 let mut tangent = 0.0;
                 for m in pair.solver_manifolds() {
@@ -504,13 +507,13 @@ mod tests {
     #[test]
     fn bodies_round_trip_through_user_data() {
         for b in [
-            Body::Cloth,
-            Body::Ball(3),
-            Body::Cushion(17),
-            Body::Jaw(11),
-            Body::Pocket(5),
+            TablePart::Cloth,
+            TablePart::Ball(3),
+            TablePart::Cushion(17),
+            TablePart::Jaw(11),
+            TablePart::Pocket(5),
         ] {
-            assert_eq!(Body::decode(b.encode()), b);
+            assert_eq!(TablePart::decode(b.encode()), b);
         }
     }
 }

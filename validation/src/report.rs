@@ -290,21 +290,31 @@ fn runs_of(report: &Report, method: Method) -> impl Iterator<Item = &RunReport> 
         .filter(move |r| r.compared().map_or(Method::WholeShot, |c| c.method) == method)
 }
 
+/// A Markdown table's header: the fixed columns, then one per figure.
+fn table_head(out: &mut String, fixed: [&str; 4], figures: impl Iterator<Item = String>) {
+    let names: Vec<String> = fixed.iter().map(|s| s.to_string()).chain(figures).collect();
+    let _ = writeln!(out, "| {} |", names.join(" | "));
+    let _ = writeln!(out, "|{}", "---|".repeat(names.len()));
+}
+
+/// The rest of a row of a run that was not compared: its verdict, and a dash per figure.
+fn not_compared(out: &mut String, r: &RunReport, figures: usize) {
+    let _ = write!(
+        out,
+        " - | {} |{}",
+        r.verdict().word(),
+        " - |".repeat(figures)
+    );
+}
+
 fn whole_table(out: &mut String, report: &Report) {
     out.push_str("\n## Results: whole shot\n\n");
     out.push_str(
         "Each cell: the largest difference between the engines / its tolerance (the event or ball \
          where the ratio is worst is in the details below).\n\n",
     );
-    let _ = write!(out, "| scene | models | impacts | verdict |");
-    for f in FIGURES {
-        let _ = write!(out, " {} |", f.name());
-    }
-    out.push_str("\n|---|---|---|---|");
-    for _ in FIGURES {
-        out.push_str("---|");
-    }
-    out.push('\n');
+    let figures = FIGURES.iter().map(|f| f.name().to_string());
+    table_head(out, ["scene", "models", "impacts", "verdict"], figures);
     for r in runs_of(report, Method::WholeShot) {
         let _ = write!(out, "| {} | {} |", r.scene, r.models.name());
         match r.compared() {
@@ -319,12 +329,7 @@ fn whole_table(out: &mut String, report: &Report) {
                     let _ = write!(out, " {} |", figure_cell(c.whole.figure(f)));
                 }
             }
-            None => {
-                let _ = write!(out, " - | {} |", r.verdict().word());
-                for _ in FIGURES {
-                    out.push_str(" - |");
-                }
-            }
+            None => not_compared(out, r, FIGURES.len()),
         }
         out.push('\n');
     }
@@ -340,15 +345,9 @@ fn stretch_table(out: &mut String, report: &Report) {
          changes are against their by-design bounds. The last column is the whole-shot \
          comparison, kept as information (no verdict).\n\n",
     );
-    let _ = write!(out, "| scene | models | stretches | verdict |");
-    for f in STRETCH_FIGURES {
-        let _ = write!(out, " {} |", f.name());
-    }
-    out.push_str(" whole shot (information) |\n|---|---|---|---|");
-    for _ in STRETCH_FIGURES {
-        out.push_str("---|");
-    }
-    out.push_str("---|\n");
+    let figures = STRETCH_FIGURES.iter().map(|f| f.name().to_string());
+    let columns = figures.chain(["whole shot (information)".to_string()]);
+    table_head(out, ["scene", "models", "stretches", "verdict"], columns);
     for r in runs_of(report, Method::Stretches) {
         let _ = write!(out, "| {} | {} |", r.scene, r.models.name());
         match r.compared() {
@@ -365,13 +364,7 @@ fn stretch_table(out: &mut String, report: &Report) {
                 }
                 let _ = write!(out, " {} |", information_cell(&c.whole));
             }
-            None => {
-                let _ = write!(out, " - | {} |", r.verdict().word());
-                for _ in STRETCH_FIGURES {
-                    out.push_str(" - |");
-                }
-                out.push_str(" - |");
-            }
+            None => not_compared(out, r, STRETCH_FIGURES.len() + 1),
         }
         out.push('\n');
     }

@@ -293,7 +293,7 @@ impl Sim<'_> {
         }
         // Nothing left to happen before the horizon (candidates are only searched up to it).
         if let Some(h) = self.opts.horizon
-            && self.balls.iter().any(|b| b.state.motion.is_moving())
+            && self.balls.iter().any(|b| !b.state.motion.has_stopped())
         {
             self.now = self.now.max(h);
             return Ok(Ending::Horizon);
