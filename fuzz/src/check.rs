@@ -7,9 +7,9 @@ use snooker_engine::{Shot, SimError, SimOptions, simulate};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 /// Simulated time after which a shot on a near-frictionless cloth is stopped, s.
-pub const UNPHYSICAL_MAX_TIME: f64 = 120.0;
+pub const UNPHYSICAL_MAX_TIME: f64 = 30.0;
 /// Events after which a shot on a near-frictionless cloth is stopped.
-pub const UNPHYSICAL_MAX_EVENTS: usize = 20_000;
+pub const UNPHYSICAL_MAX_EVENTS: usize = 5_000;
 
 /// How a scene ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
