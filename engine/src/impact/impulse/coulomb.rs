@@ -49,6 +49,20 @@ struct Affine {
     per_unit: [[f64; 2]; 2],
 }
 
+/// How a contact's slip creeps out of zero, or, followed quasi-statically, changes along its
+/// steady direction ([`Impact::creep`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Creep {
+    /// The slip's direction.
+    pub dir: Vec3,
+    /// The rate lambda at which the slip grows along `dir` (fraction of V per unit impulse;
+    /// negative if it shrinks, NaN if a shrinking slip has no steady direction).
+    pub rate: f64,
+    /// The size of the slip's rate without the contact's friction, |d|: the rate at which a
+    /// slip of size s slipping freely turns towards `dir` is about |d| / s.
+    pub drive: f64,
+}
+
 fn unit_or(v: Vec3, fallback: Vec3) -> Vec3 {
     let n = v.norm();
     if n > 0.0 { v / n } else { fallback }
@@ -69,12 +83,12 @@ impl Impact {
     }
 
     /// Normal force (per unit dP) at contact `k`.
-    fn normal_force(&self, f: &Forces, k: usize) -> f64 {
+    pub(super) fn normal_force(&self, f: &Forces, k: usize) -> f64 {
         if k == PRIMARY { 1.0 } else { f.reaction[k - 1] }
     }
 
     /// Rate of change of contact `k`'s slip, given the state's rates `dy`.
-    fn slip_rate<const M: usize, P: Pair<M>>(&self, dy: &[f64; M], k: usize) -> Vec3 {
+    pub(super) fn slip_rate<const M: usize, P: Pair<M>>(&self, dy: &[f64; M], k: usize) -> Vec3 {
         if k == PRIMARY {
             let (du, dn) = self.primary_motion::<M, P>(dy);
             du - dn * self.normal
@@ -199,9 +213,12 @@ impl Impact {
     /// (lambda I + c B) s = d with |s| = 1 and lambda >= 0; |(lambda I + c B)^-1 d| falls with
     /// lambda, so lambda is found in a bracket (by Newton's method, safeguarded by bisection;
     /// lambda = 0, the edge of holding, gives the direction opposite to the holding force, so
-    /// friction is continuous there). A creeping primary friction that presses other balls
-    /// than `pressed` is found again with those (as in [`Impact::hold`]); `pressed` is left as
-    /// it presses. Returns the friction, the direction and lambda.
+    /// friction is continuous there). With `slowing`, a contact that could hold is taken to
+    /// be slipping, slowly, down to zero (a slip followed quasi-statically,
+    /// [`Friction::QuasiStatic`]): the same equation with lambda < 0 gives the direction in
+    /// which its slip shrinks along itself. A creeping primary friction that presses other
+    /// balls than `pressed` is found again with those (as in [`Impact::hold`]); `pressed` is
+    /// left as it presses. Returns the friction and the creep.
     #[allow(clippy::too_many_arguments)]
     fn creep<const M: usize, P: Pair<M>>(
         &self,
@@ -212,10 +229,18 @@ impl Impact {
         k: usize,
         mut known: Option<Affine>,
         pressed: &mut Pressed,
-    ) -> (Vec3, Vec3, f64) {
-        let mut out = (Vec3::zeros(), Vec3::zeros(), 0.0);
+        slowing: bool,
+    ) -> (Vec3, Creep) {
+        let mut out = (
+            Vec3::zeros(),
+            Creep {
+                dir: Vec3::zeros(),
+                rate: 0.0,
+                drive: 0.0,
+            },
+        );
         for attempt in 0..SUPPORT_PATTERNS {
-            out = self.creep_under::<M, P>(y, loc, mode, held, k, known.take(), *pressed);
+            out = self.creep_under::<M, P>(y, loc, mode, held, k, known.take(), *pressed, slowing);
             if k != PRIMARY {
                 // The cloth's friction does not move the balls vertically.
                 break;
@@ -242,7 +267,8 @@ impl Impact {
         k: usize,
         known: Option<Affine>,
         pressed: Pressed,
-    ) -> (Vec3, Vec3, f64) {
+        slowing: bool,
+    ) -> (Vec3, Creep) {
         let t = self.tangents(k);
         let mut probe = *held;
         probe[k] = Vec3::zeros();
@@ -283,14 +309,13 @@ impl Impact {
             (s, ms)
         };
         let norm = |v: [f64; 2]| (v[0] * v[0] + v[1] * v[1]).sqrt();
-        let mut lambda = 0.0;
-        if norm(s_of(0.0).0) > 1.0 {
-            // Newton's method on 1/|s| - 1, nearly linear in lambda (|s| ~ |d| / lambda for
-            // large lambda), so a handful of steps reach rounding; kept strictly inside the
-            // bracket [lo, hi] of the root, halving it whenever a step would not be, and
-            // stopping at the width a bisection of the whole bracket would end at.
-            let (mut lo, mut hi) = (0.0, norm(d) + cap * (b[0][0].abs() + b[1][1].abs()) + 1.0);
-            let width = hi * f64::EPSILON;
+        // Newton's method on 1/|s| - 1, which rises with lambda (nearly linearly: |s| ~ |d| /
+        // lambda for large lambda), from `start`, kept strictly inside the bracket [lo, hi] of
+        // the root, halving it whenever a step would not be, and stopping at the width a
+        // bisection of the whole bracket would end at: a handful of steps reach rounding.
+        let newton = |mut lo: f64, mut hi: f64, start: f64| {
+            let width = (hi - lo) * f64::EPSILON;
+            let mut lambda = start;
             for _ in 0..100 {
                 let (s, ms) = s_of(lambda);
                 let ns = norm(s);
@@ -307,32 +332,78 @@ impl Impact {
                 if !(next > lo && next < hi) {
                     next = 0.5 * (lo + hi);
                 }
-                let done = (next - lambda).abs() <= 1e-15 * next || hi - lo <= width;
+                let done = (next - lambda).abs() <= 1e-15 * next.abs() || hi - lo <= width;
                 lambda = next;
                 if done {
                     break;
                 }
             }
+            lambda
+        };
+        let mut lambda = 0.0;
+        if norm(s_of(0.0).0) > 1.0 {
+            lambda = newton(
+                0.0,
+                norm(d) + cap * (b[0][0].abs() + b[1][1].abs()) + 1.0,
+                0.0,
+            );
+        } else if slowing {
+            // A slip coming down to zero: lambda < 0, above the largest (real, negative) root
+            // of det(lambda I + c B), where |s| is unbounded. Without a root in that bracket
+            // (B's eigenvalues complex, or not both positive) the slip has no steady
+            // direction: rate NaN.
+            let (tr, det) = (
+                cap * (b[0][0] + b[1][1]),
+                cap * cap * (b[0][0] * b[1][1] - b[0][1] * b[1][0]),
+            );
+            // (A double root, as the cloth's isotropic B gives, may round to complex ones.)
+            let disc = tr * tr - 4.0 * det;
+            let pole = 0.5 * (disc.max(0.0).sqrt() - tr);
+            lambda = if tr > 0.0 && det > 0.0 && pole < 0.0 {
+                newton(pole, 0.0, 0.0)
+            } else {
+                f64::NAN
+            };
+            let found = (norm(s_of(lambda).0) - 1.0).abs() <= 1e-6;
+            if !found {
+                lambda = f64::NAN;
+            }
         }
-        let s = s_of(lambda).0;
+        let s = s_of(if lambda.is_nan() { 0.0 } else { lambda }).0;
         let dir = unit_or(s[0] * t[0] + s[1] * t[1], t[0]);
-        (-cap * dir, dir, lambda)
+        let creep = Creep {
+            dir,
+            rate: lambda,
+            drive: norm(d),
+        };
+        (-cap * dir, creep)
     }
 
     /// Frictions of the contacts at zero slip, by Coulomb's law taken jointly: those that can
     /// hold do (one linear solve for all of them), the others creep at mu N (one at a time,
-    /// each release changing what the rest need). Also returns, per contact, the creeping
-    /// direction and its lambda.
+    /// each release changing what the rest need); and of the slips followed quasi-statically,
+    /// found first. Also returns, per contact, its creep if it creeps (or is followed so).
+    #[inline(always)]
     pub(super) fn at_zero<const M: usize, P: Pair<M>>(
         &self,
         y: &[f64; M],
         loc: &Local,
         mode: &Mode,
-    ) -> ([Vec3; 3], [Option<(Vec3, f64)>; 3]) {
+    ) -> ([Vec3; 3], [Option<Creep>; 3]) {
         let mut held = [Vec3::zeros(); 3];
-        let mut creeping: [Option<(Vec3, f64)>; 3] = [None; 3];
+        let mut creeping: [Option<Creep>; 3] = [None; 3];
         // The balls the cloth presses on without the frictions to be found: where to start.
         let mut pressed = self.pressed_under::<M, P>(y, loc, mode, &held);
+        // Slips followed quasi-statically slip at mu N, in their steady directions, whatever
+        // the contacts at zero do.
+        for k in 0..3 {
+            if let Friction::QuasiStatic(..) = mode.friction[k] {
+                let (force, creep) =
+                    self.creep::<M, P>(y, loc, mode, &held, k, None, &mut pressed, true);
+                held[k] = force;
+                creeping[k] = Some(creep);
+            }
+        }
         for _ in 0..3 {
             let mut which_at = [0usize; 3];
             let mut n = 0;
@@ -356,10 +427,10 @@ impl Impact {
                 .filter(|&k| excess(k) > 0.0)
                 .max_by(|&a, &b| excess(a).total_cmp(&excess(b)));
             let Some(k) = worst else { break };
-            let (force, dir, lambda) =
-                self.creep::<M, P>(y, loc, mode, &held, k, single, &mut pressed);
+            let (force, creep) =
+                self.creep::<M, P>(y, loc, mode, &held, k, single, &mut pressed, false);
             held[k] = force;
-            creeping[k] = Some((dir, lambda));
+            creeping[k] = Some(creep);
         }
         (held, creeping)
     }

@@ -4,7 +4,7 @@
 //! predicts, rather than a full step of the integrator and a search for the event.
 
 use super::events::{Event, K};
-use super::mode::{ESTABLISHED_PER_ZERO, Friction, Mode};
+use super::mode::{Friction, Mode};
 use crate::ball::Vec3;
 use crate::impact::dopri::{ErrorMeasure, Events};
 
@@ -37,12 +37,11 @@ where
     let f0 = f(y);
     // The slips are linear in the state: those of the slopes are their rates.
     let (now, rates) = (slips(y), slips(&f0));
-    let established = ESTABLISHED_PER_ZERO * mode.zero;
     let mut first: Option<(f64, usize)> = None;
     for k in 0..3 {
         if let Friction::Starting(dir) = mode.friction[k] {
             let growth = rates[k].dot(&dir);
-            let dp = (established - now[k].dot(&dir)) / growth;
+            let dp = (mode.established[k] - now[k].dot(&dir)) / growth;
             if !(growth > 0.0 && dp > 0.0 && dp.is_finite()) {
                 return None;
             }

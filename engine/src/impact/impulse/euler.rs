@@ -22,12 +22,7 @@ impl Impact {
         let dp = (1.0 + self.e) / inv_sum.max(1e-12) / steps as f64;
         let (mut compressing, mut target) = (true, 0.0);
         for _ in 0..100 * steps {
-            let mut mode = Mode {
-                friction: [Friction::Off; 3],
-                compressing,
-                w_target: target,
-                zero: 0.0,
-            };
+            let mut mode = Mode::new([Friction::Off; 3], compressing, target, 0.0);
             let loc = self.local::<N, Free>(&y);
             for kk in 0..3 {
                 let s = loc.slip[kk];

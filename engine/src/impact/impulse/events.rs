@@ -3,8 +3,8 @@
 //! functions: each changes sign at its switch, and the integrator locates the root on its
 //! continuous extension ([`crate::impact::dopri`]).
 
-use super::laws::NONE_HELD;
-use super::mode::{CLOTH, ESTABLISHED_PER_ZERO, Friction, PRIMARY};
+use super::laws::{Held, NONE_HELD};
+use super::mode::{CLOTH, Friction, Mode, PRIMARY};
 use super::pair::Pair;
 use super::phase::PhaseLaws;
 use super::problem::Impact;
@@ -52,22 +52,39 @@ impl Event {
     }
 }
 
-/// The event function of a frictional contact under `law` whose slip is `s`: it changes sign
-/// when the slip turns through 90 degrees from the phase's direction, and drops to exactly zero
-/// when the slip comes down to zero (a slip growing out of zero arms it without a sign change);
-/// a slip creeping out of zero crosses zero when it is established.
+/// The event function of frictional contact `k` under `mode` whose slip is `s`: it changes
+/// sign when the slip turns through 90 degrees from the phase's direction, and drops to exactly
+/// zero when the slip comes down to zero (a slip growing out of zero arms it without a sign
+/// change), and one relaxing onto its steady direction also when it lies along it; a slip
+/// creeping out of zero crosses zero when it is established. One followed quasi-statically
+/// crosses zero where it is established, where it comes down to zero (its part along its
+/// direction at the phase's start changes sign: a step may cross the zero band), or where its
+/// rate along its steady direction (`rate`, from the Coulomb solve) changes sign.
 #[inline(always)]
-pub(super) fn slip_event(law: Friction, s: Vec3, zero: f64) -> f64 {
-    match law {
+pub(super) fn slip_event(mode: &Mode, k: usize, s: Vec3, rate: impl FnOnce() -> f64) -> f64 {
+    let n = s.norm();
+    match mode.friction[k] {
         Friction::Off => 0.0,
         Friction::Slip(r) => {
-            if s.norm() > 2.0 * zero {
+            if n <= 2.0 * mode.zero {
+                0.0
+            } else if let Some(u) = mode.aligning[k] {
+                s.dot(&r).min((s - s.dot(&u) * u).norm() - 2.0 * mode.zero)
+            } else {
                 s.dot(&r)
+            }
+        }
+        Friction::AtZero | Friction::Starting(_) => n - mode.established[k],
+        Friction::QuasiStatic(r, sign) => {
+            if n > 2.0 * mode.zero {
+                // No steady direction any more (NaN): the phase ends too.
+                let turned = -sign * rate();
+                let turned = if turned.is_nan() { 1.0 } else { turned };
+                (n - mode.established[k]).max(-s.dot(&r)).max(turned)
             } else {
                 0.0
             }
         }
-        Friction::AtZero | Friction::Starting(_) => s.norm() - ESTABLISHED_PER_ZERO * zero,
     }
 }
 
@@ -90,13 +107,28 @@ fn support_event(vz: f64, fz: impl FnOnce() -> f64) -> f64 {
 }
 
 impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'_, M, P, AT_ZERO> {
-    /// The primary contact's friction at `y` (slip `slip`): a slip's law, or the Coulomb
-    /// solve's when the contact is at zero slip.
+    /// The Coulomb solve at `y` ([`Impact::at_zero`]): the frictions of the contacts at zero
+    /// slip or followed quasi-statically, and the rates of the latter's slips.
     #[inline(always)]
-    fn primary_at(&self, y: &[f64; M], slip: Vec3) -> Vec3 {
+    fn solved(&self, y: &[f64; M]) -> (Held, [f64; 3]) {
+        let c = self.contact;
+        let (held, creeping) = c.at_zero::<M, P>(y, &c.local::<M, P>(y), self.mode);
+        (held, creeping.map(|cr| cr.map_or(f64::NAN, |cr| cr.rate)))
+    }
+
+    /// The primary contact's friction at `y` (slip `slip`): a slip's law, or the Coulomb
+    /// solve's (`held`, solved here if not given) when the contact is at zero slip or
+    /// followed quasi-statically.
+    #[inline(always)]
+    fn primary_at(&self, y: &[f64; M], slip: Vec3, held: Option<&Held>) -> Vec3 {
         let (c, mode) = (self.contact, self.mode);
-        if AT_ZERO && mode.friction[PRIMARY] == Friction::AtZero {
-            let (held, _) = c.at_zero::<M, P>(y, &c.local::<M, P>(y), mode);
+        if AT_ZERO
+            && matches!(
+                mode.friction[PRIMARY],
+                Friction::AtZero | Friction::QuasiStatic(..)
+            )
+        {
+            let held = held.copied().unwrap_or_else(|| self.solved(y).0);
             c.primary_friction(slip, mode, &held)
         } else {
             c.primary_friction(slip, mode, &NONE_HELD)
@@ -115,14 +147,14 @@ impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'_, M, P, AT_ZER
         match e {
             Event::Compressed if mode.compressing => motion().1,
             Event::Restituted if !mode.compressing => y[P::WORK] - mode.w_target,
-            Event::Slip(PRIMARY) => slip_event(mode.friction[PRIMARY], slip(), mode.zero),
-            Event::Slip(k) => slip_event(
-                mode.friction[k],
-                Impact::cloth_slip::<M, P>(y, k - CLOTH[0]),
-                mode.zero,
-            ),
+            Event::Slip(PRIMARY) => slip_event(mode, PRIMARY, slip(), || self.solved(y).1[PRIMARY]),
+            Event::Slip(k) => {
+                slip_event(mode, k, Impact::cloth_slip::<M, P>(y, k - CLOTH[0]), || {
+                    self.solved(y).1[k]
+                })
+            }
             Event::Support(i) if c.bodies[i].on_cloth => support_event(P::vel(y, i).z, || {
-                c.vertical_forces(self.primary_at(y, slip()))[i]
+                c.vertical_forces(self.primary_at(y, slip(), None))[i]
             }),
             _ => 0.0,
         }
@@ -142,12 +174,20 @@ impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> Events<M, K>
         } else {
             g[Event::Restituted.index()] = y[P::WORK] - mode.w_target;
         }
+        // The Coulomb solve, once, if a slip followed quasi-statically needs its rate.
+        let quasi_static = AT_ZERO
+            && mode
+                .friction
+                .iter()
+                .any(|law| matches!(law, Friction::QuasiStatic(..)));
+        let solved = quasi_static.then(|| self.solved(y));
+        let rate = |k: usize| solved.map_or(f64::NAN, |(_, r)| r[k]);
         let slip = u - vn * c.normal;
-        g[Event::Slip(PRIMARY).index()] = slip_event(mode.friction[PRIMARY], slip, mode.zero);
+        g[Event::Slip(PRIMARY).index()] = slip_event(mode, PRIMARY, slip, || rate(PRIMARY));
         for (i, &k) in CLOTH.iter().enumerate() {
             if !matches!(mode.friction[k], Friction::Off) {
                 let s = Impact::cloth_slip::<M, P>(y, i);
-                g[Event::Slip(k).index()] = slip_event(mode.friction[k], s, mode.zero);
+                g[Event::Slip(k).index()] = slip_event(mode, k, s, || rate(k));
             }
         }
         // The vertical forces on the bodies, formed once if a support needs them.
@@ -155,7 +195,10 @@ impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> Events<M, K>
         for i in 0..2 {
             if c.bodies[i].on_cloth {
                 g[Event::Support(i).index()] = support_event(P::vel(y, i).z, || {
-                    fz.get_or_insert_with(|| c.vertical_forces(self.primary_at(y, slip)))[i]
+                    fz.get_or_insert_with(|| {
+                        let held = solved.as_ref().map(|(h, _)| h);
+                        c.vertical_forces(self.primary_at(y, slip, held))
+                    })[i]
                 });
             }
         }

@@ -69,12 +69,12 @@ fn random_impact(rng: &mut Rng, cushion: bool) -> (Impact, Kinematics) {
 
 /// A random mode: each contact off, slipping, starting or at zero, either stage.
 fn random_mode(rng: &mut Rng) -> Mode {
-    let mut mode = Mode {
-        friction: [Friction::Off; 3],
-        compressing: rng.uniform(0.0, 1.0) < 0.5,
-        w_target: rng.uniform(-1.0, 1.0),
-        zero: 10f64.powf(rng.uniform(-9.0, 0.0)),
-    };
+    let mut mode = Mode::new(
+        [Friction::Off; 3],
+        rng.uniform(0.0, 1.0) < 0.5,
+        rng.uniform(-1.0, 1.0),
+        10f64.powf(rng.uniform(-9.0, 0.0)),
+    );
     for law in &mut mode.friction {
         let r = rng.vec(1.0).normalize();
         *law = match (rng.uniform(0.0, 4.0)) as usize {
@@ -343,9 +343,9 @@ fn held_frictions_keep_their_slips_at_zero_and_creeping_ones_grow_as_found() {
                     Vec3::zeros()
                 }
                 Some(_) if !alone => continue,
-                Some((dir, lambda)) => {
+                Some(creep) => {
                     crept_checked += 1;
-                    lambda * dir
+                    creep.rate * creep.dir
                 }
             };
             assert!(
@@ -358,5 +358,58 @@ fn held_frictions_keep_their_slips_at_zero_and_creeping_ones_grow_as_found() {
     assert!(
         held_checked > 10_000 && crept_checked > 1000 && pressed_by_friction > 5000,
         "{held_checked} held, {crept_checked} creeping, {pressed_by_friction} pressed"
+    );
+}
+
+#[test]
+fn a_slip_followed_quasi_statically_changes_along_its_steady_direction() {
+    // A slip followed quasi-statically (Friction::QuasiStatic) meets friction mu N against its
+    // steady direction, the one in which its rate is along it: put into the laws, that
+    // friction changes the slip at lambda times that direction, growing (lambda > 0) or
+    // shrinking (lambda < 0), wherever the solve finds one (its rate is NaN where it does not).
+    let mut rng = Rng(0x5eed_1234_abcd_0006);
+    let (mut growing, mut shrinking, mut none) = (0, 0, 0);
+    for case in 0..20_000 {
+        let (c, _) = random_impact(&mut rng, case % 2 == 1);
+        let y = random_state(&mut rng, &c);
+        let loc = c.local::<N, Free>(&y);
+        let mut mode = Mode::new([Friction::Off; 3], true, 0.0, 1e-8);
+        for k in 0..3 {
+            let on_cloth = k == PRIMARY || c.bodies[k - 1].on_cloth;
+            if on_cloth && c.coefficient(k) > 0.0 {
+                mode.friction[k] = Friction::Slip(loc.slip[k].normalize());
+            }
+        }
+        let k = if c.bodies[0].on_cloth && rng.uniform(0.0, 1.0) < 0.5 {
+            CLOTH[0]
+        } else {
+            PRIMARY
+        };
+        mode.friction[k] = Friction::QuasiStatic(loc.slip[k].normalize(), 1.0);
+        let (held, creeping) = c.at_zero::<N, Free>(&y, &loc, &mode);
+        let creep = creeping[k].expect("a slip followed quasi-statically has a creep");
+        if creep.rate.is_nan() {
+            none += 1;
+            continue;
+        }
+        let f = c.forces_with::<N, Free>(&y, loc.slip[PRIMARY], &mode, &held);
+        let rates = c
+            .local::<N, Free>(&c.derivatives::<N, Free>(loc.vn, &f))
+            .slip;
+        let expected = creep.rate * creep.dir;
+        assert!(
+            (rates[k] - expected).norm() <= 1e-9 * (1.0 + creep.drive),
+            "contact {k}: slip rate {:?}, expected {expected:?}\n{c:?}\n{y:?}\n{mode:?}",
+            rates[k]
+        );
+        if creep.rate > 0.0 {
+            growing += 1;
+        } else {
+            shrinking += 1;
+        }
+    }
+    assert!(
+        growing > 2000 && shrinking > 2000,
+        "{growing} growing, {shrinking} shrinking, {none} without a steady direction"
     );
 }
