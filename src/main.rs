@@ -2,7 +2,7 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, discrepancy, impact, simulate, synth, validate};
+use snooker::cmd::{self, discrepancy, impact, plan, simulate, synth, validate};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -31,6 +31,9 @@ enum Command {
     /// Find where simulation and measurement disagree, name the missing physical effects from
     /// the catalogue, add them and show the gap shrink.
     Discrepancy(discrepancy::Args),
+    /// Plan a shot: the strike that pots a ball and leaves the cue ball nearest a target
+    /// (thesis chapter 7), ranked by its pot probability under execution noise.
+    Plan(plan::Args),
 }
 
 fn main() -> ExitCode {
@@ -61,5 +64,6 @@ fn main() -> ExitCode {
         Command::Validate(a) => validate::run_command(a),
         Command::Synth(a) => synth::run(a),
         Command::Discrepancy(a) => discrepancy::run(a),
+        Command::Plan(a) => plan::run(a),
     }
 }

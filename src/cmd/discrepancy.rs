@@ -57,13 +57,13 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return failed(format!("{}: {e}", args.data.display())),
     };
     if !args.quiet {
-        print!("{}", dsc::report::text(&m, &findings));
+        out!("{}", dsc::report::text(&m, &findings));
     }
     match write(&args, &m, &findings) {
         Ok(files) => {
             if !args.quiet {
                 for f in files {
-                    println!("wrote {}", f.display());
+                    outln!("wrote {}", f.display());
                 }
             }
             ExitCode::SUCCESS

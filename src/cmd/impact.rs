@@ -82,19 +82,19 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(format!("{e:#}")),
     };
     if args.json {
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&doc).expect("finite numbers")
         );
     } else {
-        print!("{}", text(&doc));
+        out!("{}", text(&doc));
     }
     if let Some(path) = &args.plot {
         if let Err(e) = plot::slips(&samples, axes, path) {
             return bad_input(format!("--plot {}: {e:#}", path.display()));
         }
         if !args.json {
-            println!("plot written to {}", path.display());
+            outln!("plot written to {}", path.display());
         }
     }
     ExitCode::SUCCESS

@@ -1,8 +1,26 @@
 //! One module per command: its arguments (clap) and what it does. The physics is the engine's;
 //! the formats are the scene crate's; a command reads its input, runs them and writes.
 
+/// `println!` to standard output that does not panic when the reader has gone (`| head`):
+/// the output is then unwanted, not an error.
+macro_rules! outln {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
+/// `print!` to standard output, likewise.
+macro_rules! out {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stdout(), $($t)*);
+    }};
+}
+
 pub mod discrepancy;
 pub mod impact;
+pub mod plan;
 pub mod simulate;
 pub mod synth;
 pub mod validate;

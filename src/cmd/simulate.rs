@@ -78,7 +78,7 @@ pub fn run(args: Args) -> ExitCode {
         if json_to_stdout {
             eprint!("{text}");
         } else {
-            print!("{text}");
+            out!("{text}");
         }
     }
     // The recording is made before anything is written, so that a failure leaves no result.
@@ -103,7 +103,7 @@ pub fn run(args: Args) -> ExitCode {
         } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
             return bad_input(format!("--json {out}: {e:#}"));
         } else if !args.quiet {
-            println!("result written to {out}");
+            outln!("result written to {out}");
         }
     }
     if let Some((out, bytes)) = recording {

@@ -59,7 +59,7 @@ pub fn run(args: Args) -> ExitCode {
     };
     match synth(&args, &camera) {
         Ok(text) => {
-            print!("{text}");
+            out!("{text}");
             ExitCode::SUCCESS
         }
         Err(e) => bad_input(format!("{e:#}")),

@@ -128,15 +128,15 @@ pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
 
 /// Prints the report and writes the requested files.
 pub fn output(req: &Request, report: &Report) -> Result<(), BadInput> {
-    print!("{}", report::text(report));
+    out!("{}", report::text(report));
     if let Some(p) = &req.json {
         let text = serde_json::to_string_pretty(report).map_err(|e| BadInput(e.to_string()))?;
         write(p, &(text + "\n"))?;
-        println!("JSON written to {}", p.display());
+        outln!("JSON written to {}", p.display());
     }
     if let Some(p) = &req.markdown {
         write(p, &report::markdown(report))?;
-        println!("Markdown written to {}", p.display());
+        outln!("Markdown written to {}", p.display());
     }
     Ok(())
 }

@@ -1,0 +1,185 @@
+//! The shot planner: given the balls where they lie, an object ball, a pocket and a target for
+//! the cue ball, the strike (speed, heading, tip offsets, elevation) that pots the ball and
+//! leaves the cue ball nearest the target: the question of thesis chapter 7 (§7.1.5,
+//! eq. 7.10), which the thesis answered with a genetic algorithm over its forward model in
+//! minutes per shot (§7.2.2, §7.3).
+//!
+//! Here the heading is solved for the pot on the engine's own result ([`aim`]), the rest is a
+//! grid of starts and Nelder–Mead per route of the cue ball ([`search`]), all simulated in
+//! parallel, and the shots found are ranked by their pot probability under execution noise
+//! ([`robust`]) before their distance. Every shot is simulated exactly as `snooker simulate`
+//! runs the scene with that `[cue]` ([`scene_out`] writes it), so a plan replays to the bit.
+//!
+//! ```
+//! use snooker_planner::{Request, plan};
+//! let scene = snooker_scene::parse(
+//!     r#"balls = [{id = "cue", pos = [1.2, 0.9]}, {id = "red", pos = [1.0, 1.4]}]"#,
+//!     "doc.toml",
+//! ).unwrap();
+//! let mut request = Request::new("red", "middle-left", [1.5, 1.2], &scene.setup.params);
+//! request.tolerance = 0.005;
+//! request.samples = 16;
+//! let plan = plan(&scene, request).unwrap();
+//! assert!(plan.best.potted);
+//! ```
+
+pub mod aim;
+pub mod problem;
+pub mod robust;
+pub mod scene_out;
+pub mod search;
+pub mod trial;
+
+pub use problem::{Bounds, Interval, Noise, PlanError, Problem, Request};
+pub use robust::Robustness;
+pub use trial::{Fault, Route, Trial};
+
+use serde::Serialize;
+use snooker_scene::Scene;
+use std::time::Instant;
+
+/// A strike as the scene file's `[cue]` table gives it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StrikeSpec {
+    /// The ball struck.
+    pub ball: String,
+    /// Cue speed, m/s.
+    pub speed: f64,
+    /// Heading, rad.
+    pub aim: f64,
+    /// Tip offsets (side, height), m.
+    pub offset: [f64; 2],
+    /// Elevation, rad.
+    pub elevation: f64,
+}
+
+/// The cue ball's route, for reading.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RouteSpec {
+    /// Cushions met by the cue ball after the object ball (at most three).
+    pub cushions: Vec<String>,
+    /// "screw", "stun" or "follow" (tip below, near or above the centre).
+    pub spin: &'static str,
+}
+
+/// One planned shot.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PlannedShot {
+    /// The strike.
+    pub strike: StrikeSpec,
+    /// True when it pots the object ball in the pocket with no foul (without noise).
+    pub potted: bool,
+    /// Where the cue ball stops, m.
+    pub cue_final: [f64; 2],
+    /// Its distance from the target, m.
+    pub distance: f64,
+    /// The cue ball's route.
+    pub route: RouteSpec,
+    /// Under execution noise.
+    pub robustness: Robustness,
+}
+
+/// The answer (formats.md, "Plan").
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Plan {
+    /// The scene's name.
+    pub scene: String,
+    /// The object ball.
+    pub pot: String,
+    /// The pocket.
+    pub pocket: String,
+    /// The cue ball's target, m.
+    pub target: [f64; 2],
+    /// Distance that counts as reached, m.
+    pub tolerance: f64,
+    /// True when the best shot leaves the cue ball within the tolerance of the target.
+    pub reached: bool,
+    /// The shot chosen: among those within the tolerance, the likeliest to pot under noise
+    /// (then the nearest); if none is within it, the nearest.
+    pub best: PlannedShot,
+    /// Other shots, each on its own route of the cue ball, in the same order.
+    pub alternatives: Vec<PlannedShot>,
+    /// Shots simulated in all.
+    pub shots_simulated: u64,
+    /// Wall time, s.
+    pub wall_time: f64,
+}
+
+/// Plans on `scene` (its `[cue]` ignored).
+pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
+    let problem = Problem::new(scene, request)?;
+    plan_problem(&problem, &scene.name)
+}
+
+/// Plans a checked problem (the command watches [`Problem::shots`] for its progress bar).
+pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanError> {
+    let start = Instant::now();
+    let req = &problem.request;
+    let found = search::search(problem, req.alternatives + 1);
+    if found.is_empty() {
+        return Err(PlanError::CannotPot(format!(
+            "no strike within the bounds pots \"{}\" in {} without a foul ({} shots tried): \
+             the way is blocked, or the cue ball cannot reach a contact that sends it there",
+            req.pot,
+            req.pocket,
+            problem.shots()
+        )));
+    }
+    let cue_id = problem.setup.balls[problem.cue].id.clone();
+    let mut shots: Vec<PlannedShot> = found
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let t = &f.trial;
+            PlannedShot {
+                strike: StrikeSpec {
+                    ball: cue_id.clone(),
+                    speed: t.cue.speed,
+                    aim: t.cue.aim,
+                    offset: t.cue.offset,
+                    elevation: t.cue.elevation,
+                },
+                potted: t.pots(),
+                cue_final: [t.cue_final.x, t.cue_final.y],
+                distance: f.distance,
+                route: RouteSpec {
+                    cushions: t.route.cushions.clone(),
+                    spin: match t.route.spin {
+                        -1 => "screw",
+                        0 => "stun",
+                        _ => "follow",
+                    },
+                },
+                robustness: problem.robustness(&t.cue, k as u64),
+            }
+        })
+        .collect();
+    let tol = req.tolerance;
+    shots.sort_by(|a, b| {
+        let (ra, rb) = (a.distance <= tol, b.distance <= tol);
+        rb.cmp(&ra).then_with(|| {
+            if ra && rb {
+                b.robustness
+                    .pot_probability
+                    .total_cmp(&a.robustness.pot_probability)
+                    .then(a.distance.total_cmp(&b.distance))
+            } else {
+                a.distance.total_cmp(&b.distance)
+            }
+        })
+    });
+    let best = shots.remove(0);
+    shots.truncate(req.alternatives);
+    Ok(Plan {
+        scene: scene_name.to_string(),
+        pot: req.pot.clone(),
+        pocket: req.pocket.clone(),
+        target: req.target,
+        tolerance: tol,
+        reached: best.distance <= tol,
+        best,
+        alternatives: shots,
+        shots_simulated: problem.shots(),
+        wall_time: start.elapsed().as_secs_f64(),
+    })
+}

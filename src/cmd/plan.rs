@@ -1,0 +1,343 @@
+//! `snooker plan`: the strike that pots a ball and leaves the cue ball nearest a target
+//! (thesis chapter 7), with its robustness to execution noise and genuinely different
+//! alternatives; the scene with that strike, the plan as JSON, and a recording.
+
+use super::{bad_input, failed};
+use crate::{output, record};
+use indicatif::{ProgressBar, ProgressStyle};
+use snooker_engine::Vec3;
+use snooker_planner::{self as planner, Bounds, Noise, Plan, PlanError, Problem, Request};
+use snooker_scene as scene;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+/// Arguments of `snooker plan`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scene file: the balls where they lie (its `[cue]` is ignored).
+    pub scene: PathBuf,
+    /// The ball to pot (its id).
+    #[arg(long)]
+    pub pot: String,
+    /// The pocket (top-left, top-right, middle-left, middle-right, baulk-left, baulk-right).
+    #[arg(long)]
+    pub pocket: String,
+    /// Where the cue ball should stop, "X,Y" in metres (table frame).
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pub cue_to: String,
+    /// Distance to the target that counts as reached, m.
+    #[arg(long, default_value_t = 0.001)]
+    pub tolerance: f64,
+    /// Execution noise (standard deviations): aim in rad, speed as a fraction of the speed,
+    /// offset in m; e.g. "aim=0.002,speed=0.02,offset=0.001" (the default).
+    #[arg(long, value_name = "SPEC")]
+    pub noise: Option<String>,
+    /// Monte Carlo samples per shot for its pot probability.
+    #[arg(long, default_value_t = 256)]
+    pub samples: usize,
+    /// Most alternative shots (each on another route of the cue ball).
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub alternatives: usize,
+    /// Search bounds, e.g. "speed=0.3..6,elevation=0..0,side=-0.01..0.01,height=-0.01..0.01"
+    /// (m/s, rad, m, m); unnamed variables keep their defaults.
+    #[arg(long, value_name = "SPEC")]
+    pub bounds: Option<String>,
+    /// The ball struck.
+    #[arg(long, default_value = "cue")]
+    pub cue_ball: String,
+    /// Write the plan as JSON to this file, or to standard output with `-`.
+    #[arg(long, value_name = "OUT")]
+    pub json: Option<String>,
+    /// Write the scene with the planned strike as its `[cue]` (replays with `snooker
+    /// simulate`).
+    #[arg(long, value_name = "OUT.toml")]
+    pub scene_out: Option<PathBuf>,
+    /// Write a Rerun recording of the planned shot, the target, the pocket and the
+    /// alternatives' cue-ball paths.
+    #[arg(long, value_name = "OUT.rrd")]
+    pub record: Option<PathBuf>,
+    /// Seed of the noise samples.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Print nothing but errors (and the JSON if it goes to standard output).
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// Colours of the overlays: the target, the pocket, the alternatives' paths.
+const TARGET_COLOR: [u8; 3] = [255, 64, 255];
+const POCKET_COLOR: [u8; 3] = [255, 220, 0];
+const ALTERNATIVE_COLOR: [u8; 3] = [150, 150, 150];
+
+fn parse_target(s: &str) -> Result<[f64; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let nums: Vec<f64> = parts
+        .iter()
+        .filter_map(|p| p.parse::<f64>().ok())
+        .filter(|v| v.is_finite())
+        .collect();
+    match (parts.len(), nums.as_slice()) {
+        (2, [x, y]) => Ok([*x, *y]),
+        _ => Err(format!(
+            "expected two finite numbers \"X,Y\" in metres, got \"{s}\""
+        )),
+    }
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> ExitCode {
+    let file = args.scene.display().to_string();
+    let text = match std::fs::read_to_string(&args.scene) {
+        Ok(t) => t,
+        Err(e) => return bad_input(format!("{file}: cannot read the scene file: {e}")),
+    };
+    let scene = match scene::parse(&text, &file) {
+        Ok(s) => s,
+        Err(e) => return bad_input(e),
+    };
+    let p = scene.setup.params;
+    let target = match parse_target(&args.cue_to) {
+        Ok(t) => t,
+        Err(e) => return bad_input(format!("--cue-to: {e}")),
+    };
+    let noise = match Noise::default().with_spec(args.noise.as_deref().unwrap_or("")) {
+        Ok(n) => n,
+        Err(e) => return bad_input(e),
+    };
+    let bounds = match Bounds::default_for(&p).with_spec(args.bounds.as_deref().unwrap_or(""), &p) {
+        Ok(b) => b,
+        Err(e) => return bad_input(e),
+    };
+    let json = args.json.as_deref();
+    let outputs = [
+        ("--json", json.filter(|o| *o != "-").map(PathBuf::from)),
+        ("--scene-out", args.scene_out.clone()),
+        ("--record", args.record.clone()),
+    ];
+    for (flag, out) in &outputs {
+        if let Some(out) = out
+            && let Err(e) = output::check_output(out)
+        {
+            return bad_input(format!("{flag} {}: {e}", out.display()));
+        }
+    }
+    let request = Request {
+        cue_ball: args.cue_ball.clone(),
+        tolerance: args.tolerance,
+        bounds,
+        noise,
+        samples: args.samples,
+        alternatives: args.alternatives,
+        seed: args.seed,
+        ..Request::new(&args.pot, &args.pocket, target, &p)
+    };
+    let problem = match Problem::new(&scene, request) {
+        Ok(pr) => pr,
+        Err(e) => return bad_input(e),
+    };
+    let plan = match with_progress(&problem, &scene.name, args.quiet) {
+        Ok(plan) => plan,
+        Err(e @ PlanError::BadInput { .. }) => return bad_input(e),
+        Err(e @ PlanError::CannotPot(_)) => return failed(format!("{file}: {e}")),
+    };
+    // The contract: the scene written replays the planned shot to the bit. Checked here.
+    let out_text = match planner::scene_out::with_strike(&text, &plan.best.strike) {
+        Ok(t) => t,
+        Err(e) => return failed(format!("{file}: cannot write the scene again: {e}")),
+    };
+    let replay = match replay(&out_text, &file, &plan, problem.cue) {
+        Ok(r) => r,
+        Err(e) => return failed(format!("internal error: {e}")),
+    };
+    if !args.quiet {
+        let text = summary(&plan);
+        if json == Some("-") {
+            eprint!("{text}");
+        } else {
+            out!("{text}");
+        }
+    }
+    let recording = match &args.record {
+        None => None,
+        Some(out) => match recording(&problem, &plan, &replay) {
+            Ok(bytes) => Some((out, bytes)),
+            Err(e) => return failed(format!("--record {}: {e}", out.display())),
+        },
+    };
+    if let Some(out) = json {
+        let text = serde_json::to_string_pretty(&plan).expect("JSON of finite numbers");
+        if out == "-" {
+            outln!("{text}");
+        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
+            return bad_input(format!("--json {out}: {e:#}"));
+        }
+    }
+    if let Some(out) = &args.scene_out
+        && let Err(e) = output::write_atomic(out, out_text.as_bytes())
+    {
+        return bad_input(format!("--scene-out {}: {e:#}", out.display()));
+    }
+    if let Some((out, bytes)) = recording
+        && let Err(e) = output::write_atomic(out, &bytes)
+    {
+        return bad_input(format!("--record {}: {e:#}", out.display()));
+    }
+    ExitCode::SUCCESS
+}
+
+/// Plans, with a spinner on standard error once the search takes more than a moment.
+fn with_progress(problem: &Problem, name: &str, quiet: bool) -> Result<Plan, PlanError> {
+    let done = AtomicBool::new(false);
+    std::thread::scope(|s| {
+        if !quiet {
+            s.spawn(|| {
+                std::thread::sleep(Duration::from_millis(300));
+                if done.load(Ordering::Relaxed) {
+                    return;
+                }
+                let bar = ProgressBar::new_spinner();
+                if let Ok(style) =
+                    ProgressStyle::with_template("{spinner} planning: {msg} ({elapsed})")
+                {
+                    bar.set_style(style);
+                }
+                while !done.load(Ordering::Relaxed) {
+                    bar.set_message(format!("{} shots simulated", problem.shots()));
+                    bar.tick();
+                    std::thread::sleep(Duration::from_millis(100));
+                }
+                bar.finish_and_clear();
+            });
+        }
+        let plan = planner::plan_problem(problem, name);
+        done.store(true, Ordering::Relaxed);
+        plan
+    })
+}
+
+/// Simulates the scene written with the plan's strike, as `snooker simulate` does, and checks
+/// that the cue ball ends where the planner saw it, to the bit.
+fn replay(
+    text: &str,
+    file: &str,
+    plan: &Plan,
+    cue: usize,
+) -> Result<(scene::Scene, snooker_engine::Shot), String> {
+    let sc = scene::parse(text, file).map_err(|e| format!("the planned scene: {e}"))?;
+    let shot = snooker_engine::simulate(&sc.setup, &sc.options)
+        .map_err(|e| format!("the planned scene: {e}"))?;
+    let end = shot.final_states()[cue].pos;
+    if [end.x.to_bits(), end.y.to_bits()] != plan.best.cue_final.map(f64::to_bits) {
+        return Err(format!(
+            "the planned shot does not replay: the cue ball ends at ({}, {}), the plan says ({}, {})",
+            end.x, end.y, plan.best.cue_final[0], plan.best.cue_final[1]
+        ));
+    }
+    Ok((sc, shot))
+}
+
+/// A few lines for the terminal.
+fn summary(plan: &Plan) -> String {
+    let line = |tag: &str, s: &planner::PlannedShot| {
+        let st = &s.strike;
+        format!(
+            "{tag:<6} speed {:.3} m/s, aim {:.5} rad, offset ({:+.1}, {:+.1}) mm, elevation {:.3} rad \
+             -> cue ball at ({:.4}, {:.4}), {:.1} mm from the target; {} via [{}]; pots {:.0} % \
+             under noise, ends spread {:.0} mm\n",
+            st.speed,
+            st.aim,
+            st.offset[0] * 1e3,
+            st.offset[1] * 1e3,
+            st.elevation,
+            s.cue_final[0],
+            s.cue_final[1],
+            s.distance * 1e3,
+            s.route.spin,
+            s.route.cushions.join(", "),
+            100.0 * s.robustness.pot_probability,
+            s.robustness.cue_final_spread * 1e3,
+        )
+    };
+    let mut out = format!(
+        "plan: pot {} in {}, cue ball to ({}, {}): {} ({} shots simulated in {:.2} s)\n",
+        plan.pot,
+        plan.pocket,
+        plan.target[0],
+        plan.target[1],
+        if plan.reached {
+            format!("reached within {} mm", plan.tolerance * 1e3)
+        } else {
+            "not reached; the nearest pot found".to_string()
+        },
+        plan.shots_simulated,
+        plan.wall_time
+    );
+    out.push_str(&line("best", &plan.best));
+    for a in &plan.alternatives {
+        out.push_str(&line("alt", a));
+    }
+    out
+}
+
+/// The planned shot's recording, with the target, the pocket's fall circle and the
+/// alternatives' cue-ball paths over it.
+fn recording(
+    problem: &Problem,
+    plan: &Plan,
+    replay: &(scene::Scene, snooker_engine::Shot),
+) -> Result<Vec<u8>, String> {
+    let (sc, shot) = replay;
+    let r = problem.setup.params.ball_radius;
+    let mut overlays = vec![record::Overlay {
+        entity: vec!["plan".into(), "target".into()],
+        points: vec![(0.0, problem.target), (shot.duration, problem.target)],
+        color: TARGET_COLOR,
+        radius: r,
+    }];
+    let pocket = &problem.setup.table.pockets[problem.pocket];
+    overlays.push(record::Overlay {
+        entity: vec!["plan".into(), "pocket".into()],
+        points: (0..=48)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::TAU / 48.0;
+                let at = pocket.centre + pocket.radius * Vec3::new(a.cos(), a.sin(), 0.0);
+                (0.0, Vec3::new(at.x, at.y, r))
+            })
+            .collect(),
+        color: POCKET_COLOR,
+        radius: 0.002,
+    });
+    for (k, alt) in plan.alternatives.iter().enumerate() {
+        let st = &alt.strike;
+        let cue = snooker_engine::cue::Cue {
+            speed: st.speed,
+            aim: st.aim,
+            offset: st.offset,
+            elevation: st.elevation,
+        };
+        let mut setup = problem.setup.clone();
+        let before = setup.balls[problem.cue].state;
+        setup.balls[problem.cue].state = snooker_engine::cue::strike(&before, &cue, &setup.params)
+            .map_err(|e| e.to_string())?
+            .state;
+        let alt_shot =
+            snooker_engine::simulate(&setup, &problem.options).map_err(|e| e.to_string())?;
+        let track = &alt_shot.tracks[problem.cue];
+        let n = 200;
+        overlays.push(record::Overlay {
+            entity: vec!["plan".into(), format!("alternative{}", k + 1)],
+            points: (0..=n)
+                .map(|i| {
+                    let t = alt_shot.duration * i as f64 / n as f64;
+                    (t, track.state_at(t, &alt_shot.params).pos)
+                })
+                .collect(),
+            color: ALTERNATIVE_COLOR,
+            radius: 0.25 * r,
+        });
+    }
+    record::encode_with_overlays(sc, shot, &record::RecordOptions::default(), &overlays)
+        .map_err(|e| e.to_string())
+}

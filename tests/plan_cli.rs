@@ -1,0 +1,204 @@
+//! `snooker plan`: the thesis's chapter 7 position planned and replayed through
+//! `snooker simulate` to the bit, the JSON contract (formats.md, "Plan"), a snooker that
+//! cannot be potted (exit 1), and bad input (exit 2, one message, nothing written).
+
+mod common;
+
+use common::{snooker, temp_dir};
+use serde_json::Value;
+
+const CH7: &str = "scenes/chapter7-example.toml";
+
+fn json(path: &std::path::Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn the_chapter_7_plan_replays_exactly_through_simulate() {
+    let dir = temp_dir("plan-ch7");
+    let (plan, scene, result) = (
+        dir.join("plan.json"),
+        dir.join("planned.toml"),
+        dir.join("replay.json"),
+    );
+    let o = snooker(&[
+        "plan",
+        CH7,
+        "--pot",
+        "red",
+        "--pocket",
+        "middle-left",
+        "--cue-to",
+        "1.25,0.0262",
+        "--samples",
+        "32",
+        "--json",
+        plan.to_str().unwrap(),
+        "--scene-out",
+        scene.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let p = json(&plan);
+    for key in [
+        "scene",
+        "pot",
+        "pocket",
+        "target",
+        "reached",
+        "best",
+        "alternatives",
+    ] {
+        assert!(p.get(key).is_some(), "no `{key}` in {p}");
+    }
+    assert!(p["shots_simulated"].as_u64().unwrap() > 0);
+    assert!(p["wall_time"].as_f64().unwrap() > 0.0);
+    let best = &p["best"];
+    assert_eq!(best["potted"], Value::Bool(true));
+    assert_eq!(p["reached"], Value::Bool(true));
+    assert!(best["distance"].as_f64().unwrap() <= 0.001);
+    let rob = &best["robustness"];
+    assert_eq!(rob["samples"].as_u64(), Some(32));
+    let prob = rob["pot_probability"].as_f64().unwrap();
+    assert!((0.0..=1.0).contains(&prob));
+    // The scene written replays the planned shot: the same final cue-ball position, to the bit.
+    let o = snooker(&[
+        "simulate",
+        scene.to_str().unwrap(),
+        "--json",
+        result.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = json(&result);
+    let end = &r["final"]["cue"]["pos"];
+    for k in 0..2 {
+        assert_eq!(
+            end[k].as_f64().unwrap().to_bits(),
+            best["cue_final"][k].as_f64().unwrap().to_bits()
+        );
+    }
+    assert!(
+        r["pots"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|p| p["ball"] == "red")
+    );
+}
+
+#[test]
+fn a_ball_that_cannot_be_potted_exits_1() {
+    // The red's way to the pocket is shut by two balls on the pocket's lip.
+    let dir = temp_dir("plan-snookered");
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}, \
+         {id = \"b1\", pos = [3.48, 1.72]}, {id = \"b2\", pos = [3.52, 1.66]}, \
+         {id = \"b3\", pos = [3.42, 1.70]}]\n",
+    )
+    .unwrap();
+    let out = dir.join("plan.json");
+    let o = snooker(&[
+        "plan",
+        scene.to_str().unwrap(),
+        "--pot",
+        "red",
+        "--pocket",
+        "top-left",
+        "--cue-to",
+        "1.5,0.5",
+        "--samples",
+        "4",
+        "--json",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no strike"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn bad_requests_exit_2_with_one_message_and_write_nothing() {
+    let dir = temp_dir("plan-bad");
+    let out = dir.join("plan.json");
+    let base = ["plan", CH7, "--json", out.to_str().unwrap()];
+    for (extra, says) in [
+        (
+            &[
+                "--pot",
+                "blue",
+                "--pocket",
+                "middle-left",
+                "--cue-to",
+                "1,1",
+            ][..],
+            "--pot",
+        ),
+        (
+            &["--pot", "red", "--pocket", "side", "--cue-to", "1,1"],
+            "--pocket",
+        ),
+        (
+            &["--pot", "red", "--pocket", "middle-left", "--cue-to", "9,1"],
+            "--cue-to",
+        ),
+        (
+            &[
+                "--pot",
+                "red",
+                "--pocket",
+                "middle-left",
+                "--cue-to",
+                "0.87,0.68",
+            ],
+            "--cue-to",
+        ),
+        (
+            &["--pot", "red", "--pocket", "middle-left", "--cue-to", "1;1"],
+            "--cue-to",
+        ),
+        (
+            &[
+                "--pot",
+                "red",
+                "--pocket",
+                "middle-left",
+                "--cue-to",
+                "1,1",
+                "--noise",
+                "aim=x",
+            ],
+            "--noise",
+        ),
+        (
+            &[
+                "--pot",
+                "red",
+                "--pocket",
+                "middle-left",
+                "--cue-to",
+                "1,1",
+                "--bounds",
+                "speed=0.3..40",
+            ],
+            "--bounds",
+        ),
+        (
+            &["--pot", "cue", "--pocket", "middle-left", "--cue-to", "1,1"],
+            "--pot",
+        ),
+    ] {
+        let args: Vec<&str> = base.iter().chain(extra).copied().collect();
+        let o = snooker(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(!out.exists(), "{args:?}");
+    }
+}
