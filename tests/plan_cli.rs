@@ -87,14 +87,13 @@ fn the_chapter_7_plan_replays_exactly_through_simulate() {
 
 #[test]
 fn a_ball_that_cannot_be_potted_exits_1() {
-    // The red's way to the pocket is shut by two balls on the pocket's lip.
+    // The red is ringed by six balls: the cue ball cannot reach it first.
     let dir = temp_dir("plan-snookered");
     let scene = dir.join("s.toml");
     std::fs::write(
         &scene,
         "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}, \
-         {id = \"b1\", pos = [3.48, 1.72]}, {id = \"b2\", pos = [3.52, 1.66]}, \
-         {id = \"b3\", pos = [3.42, 1.70]}]\n",
+         {id = \"b0\", pos = [2.554, 1.2]}, {id = \"b1\", pos = [2.527, 1.246]}, {id = \"b2\", pos = [2.473, 1.246]}, {id = \"b3\", pos = [2.446, 1.2]}, {id = \"b4\", pos = [2.473, 1.154]}, {id = \"b5\", pos = [2.527, 1.154]}]\n",
     )
     .unwrap();
     let out = dir.join("plan.json");
@@ -126,74 +125,44 @@ fn a_ball_that_cannot_be_potted_exits_1() {
 fn bad_requests_exit_2_with_one_message_and_write_nothing() {
     let dir = temp_dir("plan-bad");
     let out = dir.join("plan.json");
-    let base = ["plan", CH7, "--json", out.to_str().unwrap()];
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [0.698, 0.562]}, {id = \"red\", pos = [0.869, 0.681]}, \
+         {id = \"blue\", pos = [2.0, 1.0]}]\n",
+    )
+    .unwrap();
+    let base = [
+        "plan",
+        scene.to_str().unwrap(),
+        "--json",
+        out.to_str().unwrap(),
+    ];
+    let ok = "--pot red --pocket middle-left";
     for (extra, says) in [
         (
-            &[
-                "--pot",
-                "blue",
-                "--pocket",
-                "middle-left",
-                "--cue-to",
-                "1,1",
-            ][..],
+            "--pot pink --pocket middle-left --cue-to 1,1".to_string(),
             "--pot",
         ),
         (
-            &["--pot", "red", "--pocket", "side", "--cue-to", "1,1"],
+            "--pot cue --pocket middle-left --cue-to 1,1".to_string(),
+            "--pot",
+        ),
+        (
+            "--pot red --pocket side --cue-to 1,1".to_string(),
             "--pocket",
         ),
+        (format!("{ok} --cue-to 9,1"), "--cue-to"),
+        (format!("{ok} --cue-to 2.01,1.0"), "--cue-to"),
+        (format!("{ok} --cue-to 1;1"), "--cue-to"),
+        (format!("{ok} --cue-to 1,1 --noise aim=x"), "--noise"),
         (
-            &["--pot", "red", "--pocket", "middle-left", "--cue-to", "9,1"],
-            "--cue-to",
-        ),
-        (
-            &[
-                "--pot",
-                "red",
-                "--pocket",
-                "middle-left",
-                "--cue-to",
-                "0.87,0.68",
-            ],
-            "--cue-to",
-        ),
-        (
-            &["--pot", "red", "--pocket", "middle-left", "--cue-to", "1;1"],
-            "--cue-to",
-        ),
-        (
-            &[
-                "--pot",
-                "red",
-                "--pocket",
-                "middle-left",
-                "--cue-to",
-                "1,1",
-                "--noise",
-                "aim=x",
-            ],
-            "--noise",
-        ),
-        (
-            &[
-                "--pot",
-                "red",
-                "--pocket",
-                "middle-left",
-                "--cue-to",
-                "1,1",
-                "--bounds",
-                "speed=0.3..40",
-            ],
+            format!("{ok} --cue-to 1,1 --bounds speed=0.3..40"),
             "--bounds",
         ),
-        (
-            &["--pot", "cue", "--pocket", "middle-left", "--cue-to", "1,1"],
-            "--pot",
-        ),
     ] {
-        let args: Vec<&str> = base.iter().chain(extra).copied().collect();
+        let extra: Vec<&str> = extra.split_whitespace().collect();
+        let args: Vec<&str> = base.iter().copied().chain(extra).collect();
         let o = snooker(&args);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
