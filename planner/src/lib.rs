@@ -13,7 +13,7 @@
 //! ```
 //! use snooker_planner::{Request, plan};
 //! let scene = snooker_scene::parse(
-//!     r#"balls = [{id = "cue", pos = [1.2, 0.9]}, {id = "red", pos = [1.0, 1.4]}]"#,
+//!     r#"balls = [{id = "cue", pos = [1.0, 0.8]}, {id = "red", pos = [1.3, 1.3]}]"#,
 //!     "doc.toml",
 //! ).unwrap();
 //! let mut request = Request::new("red", "middle-left", [1.5, 1.2], &scene.setup.params);
