@@ -188,3 +188,75 @@ fn a_spin_that_never_decays_never_stops() {
         assert_eq!(shot.final_states()[0].motion, Motion::Spinning);
     }
 }
+
+/// Whether the shot has an impact of ball `id` within a millisecond of `t` (s): the impact a
+/// regression scene was found failing at is still met.
+fn impact_near(scene: &Scene, shot: &Shot, id: &str, t: f64) -> bool {
+    let i = scene.setup.balls.iter().position(|b| b.id == id).unwrap();
+    shot.events
+        .iter()
+        .any(|e| e.balls.contains(&i) && (e.t - t).abs() < 1e-3)
+}
+
+#[test]
+fn a_slow_slip_at_the_root_of_its_rate_goes_on() {
+    // Found (10^6 run, scene 492653 of seed 20261124): "more than 200 phases" at a cushion.
+    // A slow slip followed quasi-statically ended its phase where its rate changed sign; the
+    // next phase took the sign of the rate at the root (rounding, 1e-32) and ended at once,
+    // for ever. The sign now comes from the trend, and a rate within the events' resolution
+    // of zero has not turned.
+    let (scene, shot) = run(r#"
+        params = {mu_cushion = 0.14664268626879817}
+        cue = {ball = "cue", speed = 14.246222515640508, aim = -0.9600540636029047,
+               offset = [-0.0021596328406501535, -0.005627456837511229]}
+        balls = [{id = "cue", pos = [1.3074486503875544, 1.5555755439253325]}]
+    "#);
+    assert!(impact_near(&scene, &shot, "cue", 0.5532790951745208));
+}
+
+#[test]
+fn a_cloth_slip_at_the_root_of_its_rate_goes_on() {
+    // Found (10^6 run, scene 695206 of seed 20261124): the same at the cloth under a ball
+    // pressed into the cushion (its slip, followed quasi-statically, shrinking at a rate of
+    // rounding size, then passing through zero in the next step).
+    let (scene, shot) = run(r#"
+        params = {ball_radius = 0.04, cue_tip_restitution = 0.9984357556918946, mu_slide = 1.0,
+                  cushion_height = 0.05159434610202555}
+        models = {ball_ball = "frictionless", cushion = "mathavan"}
+        balls = [
+          {id = "cue", pos = [1.0483557546140618, 1.2415444943467309]},
+          {id = "red1", pos = [3.5307172213852436, 1.1824781446654546],
+           vel = [-0.4752686507360657, -1.0115734619151653, 0.0],
+           spin = [763.8411676231354, 663.1236977334349, -537.4532885832109]},
+          {id = "yellow", pos = [3.5307172213852436, 1.4636313510524135],
+           vel = [-0.6124730456119191, -3.7073472590186145, 0.0],
+           spin = [548.8428158552156, 727.7173308074674, -862.1189598472216]},
+          {id = "red3", pos = [2.0956032219714555, 1.566419849022629]},
+          {id = "green", pos = [3.5307172213852436, 0.8902742887412195]},
+          {id = "red5", pos = [0.46800408497157336, 1.3998612581277974],
+           vel = [-3.0551844709251577, 3.2359489842564386, 0.0],
+           spin = [-476.36483316912137, 349.2552098884142, 748.3831924864367]},
+          {id = "brown", pos = [0.08422919694143041, 0.05985513186109473]},
+          {id = "red7", pos = [1.0145145662776236, 1.1690546745650696]},
+          {id = "red8", pos = [0.9269306357742149, 0.28843192485728425],
+           vel = [-1.1368947924536112, 2.768359715402726, 0.0],
+           spin = [746.4115948476422, 565.1201024325557, -349.85509050937657]},
+          {id = "red9", pos = [0.8914217651962744, 1.2576842207699075],
+           vel = [-3.2571614880924695, -1.592736877920803, 0.0],
+           spin = [87.77976708919955, 605.6551477471111, -423.43353490752736]},
+          {id = "red10", pos = [1.8636773127488875, 0.11519687402235451],
+           vel = [2.6944050208694637, 0.3747882452471062, 0.0],
+           spin = [12.997323731226567, -1.562076821036965, -0.07645547359057608]},
+          {id = "red11", pos = [3.5156221307942497, 0.06790354923704925],
+           vel = [3.1332582847436203, 9.95918481090645, 0.0],
+           spin = [10.114846574037474, -0.9053984492206961, -20.22058994633962]},
+          {id = "red12", pos = [0.5989620158741774, 1.3146235107303892],
+           vel = [-3.2600587499498728, -0.6347957627221447, 0.0],
+           spin = [-28.321019769619316, 1.0936633075649183, -20.471620053357235]},
+          {id = "red13", pos = [1.929463823262634, 0.16071758397315294],
+           vel = [0.3645785710323906, 0.5328310591231525, 0.0],
+           spin = [-261.3401520249966, 203.21038905982016, 718.1562766604382]},
+        ]
+    "#);
+    assert!(impact_near(&scene, &shot, "red1", 3.2268606572627063));
+}

@@ -77,9 +77,18 @@ pub(super) fn slip_event(mode: &Mode, k: usize, s: Vec3, rate: impl FnOnce() -> 
         Friction::AtZero | Friction::Starting(_) => n - mode.established[k],
         Friction::QuasiStatic(r, sign) => {
             if n > 2.0 * mode.zero {
-                // No steady direction any more (NaN): the phase ends too.
+                // No steady direction any more (NaN): the phase ends too. A rate within the
+                // events' resolution of zero has not turned: the phase began at that rate's
+                // own root (its sign taken from the trend), and rounding about the root must
+                // neither end it at once nor disarm the other terms.
                 let turned = -sign * rate();
-                let turned = if turned.is_nan() { 1.0 } else { turned };
+                let turned = if turned.is_nan() {
+                    1.0
+                } else if turned.abs() <= RESOLUTION {
+                    -RESOLUTION
+                } else {
+                    turned
+                };
                 (n - mode.established[k]).max(-s.dot(&r)).max(turned)
             } else {
                 0.0
@@ -88,22 +97,23 @@ pub(super) fn slip_event(mode: &Mode, k: usize, s: Vec3, rate: impl FnOnce() -> 
     }
 }
 
-/// A support's event function within this of zero (in units of V, or of the normal impulse
-/// per unit dP) is zero: the events' own resolution ([`super::phase`]'s root tolerance). A
+/// The events' own resolution ([`super::phase`]'s root tolerance: an event is located where
+/// its function is within this of zero), in units of V, of the normal impulse per unit dP, or
+/// of V per unit impulse for a slip's rate. A support's event function within it is zero: a
 /// ball on the cloth whose other vertical forces cancel (both balls on the cloth, friction
 /// horizontal) feels a vertical force of rounding size, 1e-18 to 1e-15, whose sign is noise:
 /// it neither presses nor lifts (thesis §6.1.2), and must not switch the phase.
-const SUPPORT_RESOLUTION: f64 = 1e-12;
+pub(super) const RESOLUTION: f64 = 1e-12;
 
 /// The event function of body `i`'s support: its vertical speed while it is up (it comes
 /// back down), the other vertical forces on it while it is down (they change sign where the
 /// cloth starts or stops holding it); `fz` gives those forces, computed only if needed. Zero
-/// within [`SUPPORT_RESOLUTION`]: an event function that starts at zero is armed only once
+/// within [`RESOLUTION`]: an event function that starts at zero is armed only once
 /// it leaves it, so noise about a switch never ends a phase.
 #[inline(always)]
 fn support_event(vz: f64, fz: impl FnOnce() -> f64) -> f64 {
     let g = if vz > 0.0 { vz } else { fz() };
-    if g.abs() > SUPPORT_RESOLUTION { g } else { 0.0 }
+    if g.abs() > RESOLUTION { g } else { 0.0 }
 }
 
 impl<const M: usize, P: Pair<M>, const AT_ZERO: bool> PhaseLaws<'_, M, P, AT_ZERO> {

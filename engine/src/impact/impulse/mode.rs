@@ -6,6 +6,7 @@
 //! out of zero ([`super::coulomb`]). A slip below the zero band counts as zero, so that noise
 //! in a nil slip never steers friction.
 
+use super::events::RESOLUTION;
 use super::laws::{Held, Local, NONE_HELD};
 use super::pair::Pair;
 use super::problem::Impact;
@@ -258,7 +259,14 @@ impl Impact {
             // The steady direction's friction is the slip's own only once the slip lies along
             // it (within the zero band); until then the slip is followed as one, to there.
             if (s - along * steady.dir).norm() <= 2.0 * mode.zero {
-                mode.friction[k] = Friction::QuasiStatic(s / n, steady.rate.signum());
+                // At a root of the rate (where a phase ends as it changes sign), the rate's
+                // own sign is rounding: the trend, a probe ahead, says which side comes next.
+                let rate = if steady.rate.abs() <= RESOLUTION {
+                    turned.rate
+                } else {
+                    steady.rate
+                };
+                mode.friction[k] = Friction::QuasiStatic(s / n, rate.signum());
                 mode.established[k] = until;
             } else {
                 mode.aligning[k] = Some(steady.dir);
