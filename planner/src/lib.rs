@@ -25,6 +25,7 @@
 
 pub mod aim;
 pub mod problem;
+pub mod reachable;
 pub mod robust;
 pub mod scene_out;
 pub mod search;

@@ -14,12 +14,14 @@
 pub mod build;
 pub mod error;
 pub mod file;
+pub mod json_input;
 pub mod model;
 pub mod params;
 pub mod result;
 pub mod toml_input;
 
 pub use error::SceneError;
+pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
 pub use toml_input::from_toml;
@@ -74,6 +76,20 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     build::build(from_toml(text, file)?, file)
 }
 
+/// Parses and validates a scene given as one JSON object with the scene file's keys (a line
+/// of a batch's JSON-lines file); `file` names it in error messages.
+///
+/// ```
+/// let scene = snooker_scene::parse_json(
+///     r#"{"balls": [{"id": "cue", "pos": [1.0, 0.8]}], "params": {"mu_roll": 0.011}}"#,
+///     "line 1",
+/// ).unwrap();
+/// assert_eq!(scene.setup.params.mu_roll, 0.011);
+/// ```
+pub fn parse_json(text: &str, file: &str) -> Result<Scene, SceneError> {
+    build::build(from_json(text, file)?, file)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,6 +131,33 @@ mod tests {
         assert_eq!(e.key, "models.ball_ball");
         let e = err("name = \n");
         assert!(e.reason.contains("line 1"), "{e}");
+    }
+
+    #[test]
+    fn json_scenes_are_toml_scenes() {
+        let toml = "name = \"j\"\n[params]\nmu_roll = 0.011\n[cue]\nball = \"cue\"\nspeed = 2\naim = 0.5\n\
+                    [[balls]]\nid = \"cue\"\npos = [1.0, 0.8]\n[[balls]]\nid = \"red\"\npos = [2, 0.9]\n";
+        let json = r#"{"name": "j", "params": {"mu_roll": 0.011},
+            "cue": {"ball": "cue", "speed": 2, "aim": 0.5},
+            "balls": [{"id": "cue", "pos": [1.0, 0.8]}, {"id": "red", "pos": [2, 0.9]}]}"#;
+        let (a, b) = (
+            parse(toml, "t.toml").unwrap(),
+            parse_json(json, "j").unwrap(),
+        );
+        assert_eq!(a.setup, b.setup);
+        assert_eq!(a.strike, b.strike);
+        let e = parse_json(r#"{"balls": [{"id": "a", "pos": [0.5, 0.5, 1]}]}"#, "l 3").unwrap_err();
+        assert_eq!((e.file.as_str(), e.key.as_str()), ("l 3", "balls[0].pos"));
+        let e = parse_json(
+            r#"{"balls": [{"id": "a", "pos": [0.5, 0.5]}], "x": 1}"#,
+            "l",
+        )
+        .unwrap_err();
+        assert!(e.reason.contains("unknown field `x`"), "{e}");
+        let e = parse_json(r#"{"balls": ["#, "l").unwrap_err();
+        assert!(e.reason.starts_with("not valid JSON"), "{e}");
+        let e = parse_json(r#"{"balls": []} {}"#, "l").unwrap_err();
+        assert!(e.reason.starts_with("not valid JSON"), "{e}");
     }
 
     #[test]
