@@ -2,7 +2,7 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, discrepancy, impact, plan, simulate, synth, validate};
+use snooker::cmd::{self, batch, discrepancy, impact, plan, simulate, synth, validate};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -34,6 +34,9 @@ enum Command {
     /// Plan a shot: the strike that pots a ball and leaves the cue ball nearest a target
     /// (thesis chapter 7), ranked by its pot probability under execution noise.
     Plan(plan::Args),
+    /// Simulate many scenes on every core (a directory of scene files or a JSON-lines file);
+    /// results as JSON lines or a Parquet table. Exits with 1 if any scene failed.
+    Batch(batch::Args),
 }
 
 fn main() -> ExitCode {
@@ -65,5 +68,6 @@ fn main() -> ExitCode {
         Command::Synth(a) => synth::run(a),
         Command::Discrepancy(a) => discrepancy::run(a),
         Command::Plan(a) => plan::run(a),
+        Command::Batch(a) => batch::run(a),
     }
 }

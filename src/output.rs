@@ -45,3 +45,64 @@ pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
     }
     written
 }
+
+/// A file written piece by piece and put in place whole: the pieces go to a temporary file
+/// beside `path`, renamed onto it by [`AtomicFile::commit`]; dropped before that, the
+/// temporary file is removed and nothing is left half-written.
+pub struct AtomicFile {
+    path: std::path::PathBuf,
+    tmp: std::path::PathBuf,
+    out: Option<std::io::BufWriter<std::fs::File>>,
+}
+
+impl AtomicFile {
+    /// Starts writing `path` (missing directories on the way are created).
+    pub fn create(path: &std::path::Path) -> anyhow::Result<AtomicFile> {
+        use anyhow::Context;
+        let dir = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(std::path::Path::new("."));
+        let name = path
+            .file_name()
+            .context("the output path has no file name")?;
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
+        let file = std::fs::File::create(&tmp)
+            .with_context(|| format!("cannot write {}", tmp.display()))?;
+        Ok(AtomicFile {
+            path: path.into(),
+            tmp,
+            out: Some(std::io::BufWriter::new(file)),
+        })
+    }
+
+    /// Appends `bytes`.
+    pub fn write(&mut self, bytes: &[u8]) -> anyhow::Result<()> {
+        use anyhow::Context;
+        use std::io::Write;
+        let out = self.out.as_mut().context("the file is closed")?;
+        out.write_all(bytes)
+            .with_context(|| format!("cannot write {}", self.tmp.display()))
+    }
+
+    /// Puts the file in place.
+    pub fn commit(mut self) -> anyhow::Result<()> {
+        use anyhow::Context;
+        let out = self.out.take().context("the file is closed")?;
+        out.into_inner()
+            .map_err(|e| e.into_error())
+            .and_then(|f| f.sync_all())
+            .with_context(|| format!("cannot write {}", self.tmp.display()))?;
+        std::fs::rename(&self.tmp, &self.path)
+            .with_context(|| format!("cannot write {}", self.path.display()))
+    }
+}
+
+impl Drop for AtomicFile {
+    fn drop(&mut self) {
+        if self.out.take().is_some() {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
+}

@@ -15,7 +15,9 @@ pub fn from_json<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Resu
         } else {
             inner.to_string()
         };
-        SceneError::new(file, if key == "." { "" } else { &key }, reason)
+        // "." is the whole document, "?" a place not reached (the text ended).
+        let key = if key == "." || key == "?" { "" } else { &key };
+        SceneError::new(file, key, reason)
     })?;
     de.end()
         .map_err(|e| SceneError::new(file, "", format!("not valid JSON: {e}")))?;

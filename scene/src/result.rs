@@ -187,8 +187,9 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
     out
 }
 
-/// The balls that left play by events of `kind`: (ball index, pocket or cushion, time).
-fn departures(shot: &Shot, kind: EventKind) -> impl Iterator<Item = (usize, &str, f64)> {
+/// The balls that left play by events of `kind` (`BallPocket`: the pots; `BallOffTable`):
+/// (ball index, pocket or cushion, time).
+pub fn departures(shot: &Shot, kind: EventKind) -> impl Iterator<Item = (usize, &str, f64)> {
     shot.events
         .iter()
         .filter(move |e| e.kind == kind)

@@ -18,6 +18,7 @@ macro_rules! out {
     }};
 }
 
+pub mod batch;
 pub mod discrepancy;
 pub mod impact;
 pub mod plan;

@@ -1,0 +1,109 @@
+//! The per-shot summaries as a Parquet table (feature `parquet`), which Polars, DuckDB and
+//! pandas read directly. One row per scene, in input order; per-ball and per-pot values are
+//! list columns of equal length within a row (explode them together to get one row per ball):
+//!
+//! | column | type | |
+//! |---|---|---|
+//! | `source`, `scene` | string | where the scene came from, its name |
+//! | `error` | string, null for a shot | why the scene failed |
+//! | `ending` | string | `at_rest` or `horizon` (null if failed) |
+//! | `duration` | f64, s | simulated duration |
+//! | `events` | u64 | events resolved |
+//! | `pot_ball`, `pot_pocket`, `pot_t` | lists of string, string, f64 (s) | the pots in time order |
+//! | `ball`, `x`, `y`, `z`, `motion` | lists of string, f64 (m) x 3, string | every ball at the end |
+
+use crate::Summary;
+use arrow_array::builder::{Float64Builder, ListBuilder, StringBuilder, UInt64Builder};
+use arrow_array::{ArrayRef, RecordBatch};
+use std::sync::Arc;
+
+/// A table that could not be encoded.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot write the Parquet table: {0}")]
+pub struct TableError(String);
+
+/// A list-of-strings column.
+fn strings(rows: &[Summary], f: impl Fn(&Summary) -> Vec<&str>) -> ArrayRef {
+    let mut b = ListBuilder::new(StringBuilder::new());
+    for r in rows {
+        for s in f(r) {
+            b.values().append_value(s);
+        }
+        b.append(true);
+    }
+    Arc::new(b.finish())
+}
+
+/// A list-of-f64 column.
+fn floats(rows: &[Summary], f: impl Fn(&Summary) -> Vec<f64>) -> ArrayRef {
+    let mut b = ListBuilder::new(Float64Builder::new());
+    for r in rows {
+        for v in f(r) {
+            b.values().append_value(v);
+        }
+        b.append(true);
+    }
+    Arc::new(b.finish())
+}
+
+/// The rows as an Arrow record batch (the columns above).
+pub fn record_batch(rows: &[Summary]) -> Result<RecordBatch, TableError> {
+    let text = |f: &dyn Fn(&Summary) -> Option<&str>| -> ArrayRef {
+        let mut b = StringBuilder::new();
+        for r in rows {
+            b.append_option(f(r));
+        }
+        Arc::new(b.finish())
+    };
+    let mut duration = Float64Builder::new();
+    let mut events = UInt64Builder::new();
+    for r in rows {
+        duration.append_option(r.duration);
+        events.append_option(r.events);
+    }
+    let coord = |k: usize| floats(rows, move |r| r.balls.iter().map(|b| b.1[k]).collect());
+    let columns: Vec<(&str, ArrayRef)> = vec![
+        ("source", text(&|r| Some(&r.source))),
+        ("scene", text(&|r| Some(&r.scene))),
+        ("error", text(&|r| r.error.as_deref())),
+        ("ending", text(&|r| r.ending)),
+        ("duration", Arc::new(duration.finish())),
+        ("events", Arc::new(events.finish())),
+        (
+            "pot_ball",
+            strings(rows, |r| r.pots.iter().map(|p| p.0.as_str()).collect()),
+        ),
+        (
+            "pot_pocket",
+            strings(rows, |r| r.pots.iter().map(|p| p.1.as_str()).collect()),
+        ),
+        (
+            "pot_t",
+            floats(rows, |r| r.pots.iter().map(|p| p.2).collect()),
+        ),
+        (
+            "ball",
+            strings(rows, |r| r.balls.iter().map(|b| b.0.as_str()).collect()),
+        ),
+        ("x", coord(0)),
+        ("y", coord(1)),
+        ("z", coord(2)),
+        (
+            "motion",
+            strings(rows, |r| r.balls.iter().map(|b| b.2).collect()),
+        ),
+    ];
+    RecordBatch::try_from_iter(columns).map_err(|e| TableError(e.to_string()))
+}
+
+/// The rows as the bytes of a Parquet file.
+pub fn parquet_bytes(rows: &[Summary]) -> Result<Vec<u8>, TableError> {
+    let batch = record_batch(rows)?;
+    let fail = |e: parquet::errors::ParquetError| TableError(e.to_string());
+    let mut out = Vec::new();
+    let mut writer =
+        parquet::arrow::ArrowWriter::try_new(&mut out, batch.schema(), None).map_err(fail)?;
+    writer.write(&batch).map_err(fail)?;
+    writer.close().map_err(fail)?;
+    Ok(out)
+}

@@ -1,0 +1,126 @@
+//! `snooker batch`: every scene of `scenes/` gives, line for line, the result `snooker simulate
+//! --json` gives (to the bit), whatever the thread count; a failing scene keeps its place with
+//! its error and the batch goes on (exit 1); the Parquet table; bad input (exit 2, one
+//! message, nothing written).
+
+mod common;
+
+use common::{snooker, temp_dir};
+use serde_json::Value;
+use std::path::Path;
+
+fn lines(path: &Path) -> Vec<Value> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+#[test]
+fn a_directory_gives_simulate_results_line_for_line_on_any_thread_count() {
+    let dir = temp_dir("batch-dir");
+    let (one, two) = (dir.join("one.jsonl"), dir.join("two.jsonl"));
+    for (out, threads) in [(&one, "1"), (&two, "2")] {
+        let o = snooker(&[
+            "batch",
+            "scenes",
+            "--out",
+            out.to_str().unwrap(),
+            "--threads",
+            threads,
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert_eq!(std::fs::read(&one).unwrap(), std::fs::read(&two).unwrap());
+    let mut files: Vec<_> = std::fs::read_dir("scenes")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    let got = lines(&one);
+    assert_eq!(got.len(), files.len());
+    for (file, mut line) in files.iter().zip(got) {
+        let o = snooker(&["simulate", file.to_str().unwrap(), "--quiet", "--json", "-"]);
+        assert!(o.status.success());
+        let want: Value = serde_json::from_slice(&o.stdout).unwrap();
+        let source = line.as_object_mut().unwrap().remove("source").unwrap();
+        assert_eq!(source, file.to_str().unwrap());
+        assert_eq!(line, want, "{}", file.display());
+    }
+}
+
+#[test]
+fn a_failing_scene_keeps_its_place_and_the_batch_goes_on() {
+    let dir = temp_dir("batch-fail");
+    let input = dir.join("shots.jsonl");
+    let good = r#"{"balls": [{"id": "cue", "pos": [1.0, 0.8]}, {"id": "red", "pos": [2.0, 0.9]}], "cue": {"ball": "cue", "speed": 2.0, "aim": 0.1}}"#;
+    let bad = r#"{"balls": [{"id": "cue", "pos": [1.0, 0.8, 3.0]}]}"#;
+    std::fs::write(&input, format!("{good}\n\n{bad}\n{good}\n")).unwrap();
+    for out in ["r.jsonl", "r.parquet"] {
+        let out = dir.join(out);
+        let o = snooker(&[
+            "batch",
+            input.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(1));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains("shots.jsonl:3") && err.contains("balls[0].pos"),
+            "{err}"
+        );
+        assert!(out.exists());
+    }
+    let got = lines(&dir.join("r.jsonl"));
+    assert_eq!(got.len(), 3);
+    assert!(
+        got[0]["source"]
+            .as_str()
+            .unwrap()
+            .ends_with("shots.jsonl:1")
+    );
+    assert!(got[1]["error"].as_str().unwrap().contains("balls[0].pos"));
+    assert!(got[1].get("events").is_none());
+    assert_eq!(got[0]["final"], got[2]["final"]);
+    // A Parquet file (its magic number at both ends; its columns are read back in
+    // batch/tests/table.rs and by pyarrow in python/tests).
+    let table = std::fs::read(dir.join("r.parquet")).unwrap();
+    assert!(table.starts_with(b"PAR1") && table.ends_with(b"PAR1"));
+}
+
+#[test]
+fn bad_input_is_one_message_and_nothing_written() {
+    let dir = temp_dir("batch-bad");
+    let out = dir.join("r.jsonl");
+    let txt = dir.join("scenes.txt");
+    std::fs::write(&txt, "x").unwrap();
+    let empty = dir.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    for (args, says) in [
+        (vec!["batch", "no/such/dir", "--out"], "no/such/dir"),
+        (vec!["batch", txt.to_str().unwrap(), "--out"], "JSON-lines"),
+        (vec!["batch", empty.to_str().unwrap(), "--out"], "no scenes"),
+        (
+            vec!["batch", "scenes", "--threads", "0", "--out"],
+            "--threads",
+        ),
+        (vec!["batch", "scenes", "--out"], "is a directory"),
+    ] {
+        let mut args = args.clone();
+        let target = if says == "is a directory" {
+            dir.to_str().unwrap()
+        } else {
+            out.to_str().unwrap()
+        };
+        args.push(target);
+        let o = snooker(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(!out.exists(), "{args:?}");
+    }
+}
