@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The project's test command: formatting, lints, every test of the workspace in release mode
-# (physics in a debug build is ~80x slower), then 10,000 fuzz scenes. Needs cargo, and a TrueType font for the
-# plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
+# (physics in a debug build is ~80x slower), then 10,000 fuzz scenes, then the Python
+# package's tests (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, and a
+# TrueType font for the plots' text (DejaVu Sans: installed here from Debian's packages if
+# the machine lacks it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 font=""
@@ -24,3 +26,5 @@ cargo test --workspace --release
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
 # (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml.
 cargo run --release -p snooker-fuzz -- --scenes 10000
+# The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
+scripts/python_tests.sh

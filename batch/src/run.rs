@@ -4,6 +4,7 @@
 
 use crate::input::Source;
 use rayon::prelude::*;
+use std::borrow::Borrow;
 use snooker_engine::{Shot, SimError};
 use snooker_scene::{Scene, SceneError};
 
@@ -38,10 +39,11 @@ impl Outcome {
     }
 }
 
-/// Simulates every scene, on `threads` threads (all cores if `None`), calling `done` after
-/// each shot (for a progress bar): the shots or their errors, in input order.
-pub fn simulate_many(
-    scenes: &[Scene],
+/// Simulates every scene (owned or shared: anything that borrows as a [`Scene`]), on `threads`
+/// threads (all cores if `None`), calling `done` after each shot (for a progress bar): the
+/// shots or their errors, in input order.
+pub fn simulate_many<S: Borrow<Scene> + Sync>(
+    scenes: &[S],
     threads: Option<usize>,
     done: impl Fn() + Sync,
 ) -> Result<Vec<Result<Shot, SimError>>, ThreadsError> {
@@ -49,6 +51,7 @@ pub fn simulate_many(
         scenes
             .par_iter()
             .map(|s| {
+                let s = s.borrow();
                 let shot = snooker_engine::simulate(&s.setup, &s.options);
                 done();
                 shot

@@ -1,0 +1,105 @@
+"""A Gymnasium-style environment on the snooker engine: how an AI user plugs in.
+
+Observation: every ball's (x, y) on the table (m; a pocketed ball at (-1, -1)), as a float32
+array of shape (balls, 2). Action: the strike, [speed m/s, aim rad, side offset m, height
+offset m, elevation rad]. Reward: +1 per object ball potted, -1 if the cue ball is potted
+(it is then respotted on the brown spot). An episode is `max_shots` shots from a random
+position of `reds` reds; it ends early when every red is down.
+
+Runs with or without gymnasium installed (with it, the class is a `gymnasium.Env` with its
+spaces). Try it: `python examples/gym_env.py` plays random strikes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+import snooker
+
+try:  # Gymnasium is optional: the environment follows its API either way.
+    import gymnasium as gym
+    from gymnasium import spaces
+
+    Base = gym.Env
+except ImportError:  # pragma: no cover
+    gym = spaces = None
+    Base = object
+
+LENGTH, WIDTH, R = 3.569, 1.778, 0.02625
+BROWN_SPOT = (0.737, 0.889)
+#: Bounds of the action (speed, aim, side, height, elevation): the engine's strike limits
+#: within a miscue-safe offset (0.8 of the 0.5 R limit) and a level-to-steep cue.
+ACTION_LOW = np.array([0.1, -math.pi, -0.0105, -0.0105, 0.0])
+ACTION_HIGH = np.array([8.0, math.pi, 0.0105, 0.0105, 1.2])
+
+
+class SnookerEnv(Base):
+    """Pot the reds with the cue ball, one strike per step."""
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, reds: int = 3, max_shots: int = 10):
+        self.reds, self.max_shots = reds, max_shots
+        self.ids = ["cue"] + [f"red{i + 1}" for i in range(reds)]
+        if spaces is not None:
+            self.observation_space = spaces.Box(-1.0, LENGTH, (len(self.ids), 2), np.float32)
+            self.action_space = spaces.Box(ACTION_LOW, ACTION_HIGH, dtype=np.float64)
+        self.rng = np.random.default_rng()
+        self.balls: dict = {}
+        self.shots = 0
+
+    def _obs(self) -> np.ndarray:
+        return np.array([self.balls.get(i, (-1.0, -1.0)) for i in self.ids], np.float32)
+
+    def reset(self, seed=None, options=None):
+        if seed is not None:
+            self.rng = np.random.default_rng(seed)
+        self.balls, self.shots = {}, 0
+        for ball in self.ids:
+            while True:
+                p = (self.rng.uniform(0.2, LENGTH - 0.2), self.rng.uniform(0.2, WIDTH - 0.2))
+                if all(math.dist(p, q) > 3 * R for q in self.balls.values()):
+                    self.balls[ball] = p
+                    break
+        return self._obs(), {}
+
+    def step(self, action):
+        speed, aim, side, height, elevation = np.clip(action, ACTION_LOW, ACTION_HIGH)
+        scene = {
+            "balls": [{"id": b, "pos": list(p)} for b, p in self.balls.items()],
+            "cue": {"ball": "cue", "speed": float(speed), "aim": float(aim),
+                    "offset": [float(side), float(height)], "elevation": float(elevation)},
+        }
+        shot = snooker.simulate(scene)
+        self.shots += 1
+        final = shot.final
+        potted = {p["ball"] for p in shot.pots}
+        off = {b for b, s in final.items() if s["motion"] == "off_table"}
+        reward = float(len(potted - {"cue"})) - float("cue" in potted)
+        self.balls = {b: tuple(s["pos"][:2]) for b, s in final.items()
+                      if b not in potted and b not in off}
+        if "cue" not in self.balls:
+            spot = BROWN_SPOT
+            if any(math.dist(spot, q) < 2 * R for q in self.balls.values()):
+                spot = (0.5, 0.5)
+            self.balls["cue"] = spot
+        terminated = len(self.balls) == 1
+        truncated = self.shots >= self.max_shots
+        info = {"events": len(shot.events), "potted": sorted(potted)}
+        return self._obs(), reward, terminated, truncated, info
+
+
+if __name__ == "__main__":
+    env = SnookerEnv()
+    obs, _ = env.reset(seed=1)
+    total, done = 0.0, False
+    while not done:
+        action = env.rng.uniform(ACTION_LOW, ACTION_HIGH)
+        action[4] = 0.0
+        obs, reward, terminated, truncated, info = env.step(action)
+        total += reward
+        done = terminated or truncated
+        print(f"shot {env.shots}: reward {reward:+.0f}, potted {info['potted']}")
+    print(f"episode reward {total:+.0f}")

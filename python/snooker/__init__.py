@@ -1,0 +1,210 @@
+"""The snooker engine from Python: event-driven shots with the thesis's frictional impacts.
+
+Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's README.
+
+    >>> import snooker
+    >>> shot = snooker.simulate({"balls": [{"id": "cue", "pos": [1.0, 0.8]},
+    ...                                    {"id": "red", "pos": [2.0, 0.9]}],
+    ...                          "cue": {"ball": "cue", "speed": 2.0, "aim": 0.1}})
+    >>> shot.positions([0.0, shot.duration]).shape
+    (2, 2, 3)
+
+Scenes are given as a path to a scene file, TOML text, or a dict with the scene file's keys.
+Bad scenes raise ``ValueError`` with the command line's message; a valid scene that the engine
+could not simulate raises ``SimulationError``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Iterable, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _snooker
+from ._snooker import CannotPot, SimulationError
+
+__all__ = [
+    "Scene",
+    "Shot",
+    "SimulationError",
+    "CannotPot",
+    "scene",
+    "simulate",
+    "simulate_many",
+    "plan",
+]
+
+Scene = _snooker.Scene
+SceneLike = Union[str, "os.PathLike[str]", dict, "_snooker.Scene"]
+
+
+def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
+    """Reads and checks a scene.
+
+    ``source`` is a path (``str`` or ``os.PathLike``) to a scene file, TOML text (a ``str``
+    containing a newline or ``=``), a dict with the scene file's keys, or a scene already
+    read. ``name`` names TOML text and dicts in error messages. Raises ``ValueError`` naming
+    the file, key and reason.
+    """
+    if isinstance(source, _snooker.Scene):
+        return source
+    if isinstance(source, dict):
+        try:
+            text = json.dumps(source, allow_nan=False)
+        except (TypeError, ValueError) as e:
+            raise ValueError(f"{name}: not a scene: {e}") from None
+        return _snooker.parse_json(text, name)
+    if isinstance(source, os.PathLike):
+        return _snooker.load(os.fspath(source))
+    if isinstance(source, str):
+        if "\n" in source or "=" in source:
+            return _snooker.parse_toml(source, name)
+        return _snooker.load(source)
+    raise ValueError(
+        f"{name}: a scene is a path, TOML text or a dict, not {type(source).__name__}"
+    )
+
+
+class Shot:
+    """A simulated shot: its events, final states and pots as in ``snooker simulate --json``,
+    and the exact trajectory at any times."""
+
+    def __init__(self, native: "_snooker.Shot"):
+        self._native = native
+        self._doc: Optional[dict] = None
+
+    @property
+    def result(self) -> dict:
+        """The whole result document (formats.md, "Result"): scene, events, final, duration,
+        pots, off_table, models, params, strike, units."""
+        if self._doc is None:
+            self._doc = json.loads(self._native.result_json())
+        return self._doc
+
+    @property
+    def events(self) -> list:
+        """The events in time order, each a dict (t, kind, balls, after, ...)."""
+        return self.result["events"]
+
+    @property
+    def final(self) -> dict:
+        """Every ball's final state by id: pos, vel, spin (lists), motion (as in the result
+        document, without reading it whole)."""
+        return {
+            b: {"pos": list(p), "vel": list(v), "spin": list(w), "motion": m}
+            for b, p, v, w, m in self._native.final_states()
+        }
+
+    @property
+    def pots(self) -> list:
+        """The balls potted, in time order: dicts with ball, pocket and t (s)."""
+        return [{"ball": b, "pocket": p, "t": t} for b, p, t in self._native.pots()]
+
+    @property
+    def duration(self) -> float:
+        """Simulated duration, s."""
+        return self._native.duration
+
+    @property
+    def ball_ids(self) -> list:
+        """The balls' ids, in the order of the positions' second axis."""
+        return self._native.ball_ids
+
+    def positions(self, times: Iterable[float]) -> np.ndarray:
+        """Every ball's position (m) at each time (s, within [0, duration]): an array of shape
+        (len(times), number of balls, 3), sampled from the exact trajectory."""
+        t = [float(x) for x in np.asarray(times, dtype=float).ravel()]
+        raw = self._native.positions(t)
+        return np.frombuffer(raw, dtype=np.float64).reshape(len(t), len(self.ball_ids), 3)
+
+    def __repr__(self) -> str:
+        return (
+            f"<Shot {self.result['scene']!r}: {len(self.events)} events, "
+            f"{self.duration:.3f} s, pots {[p['ball'] for p in self.pots]}>"
+        )
+
+
+def simulate(source: SceneLike) -> Shot:
+    """Simulates a scene (path, TOML text, dict or ``Scene``) to its end, the GIL released."""
+    return Shot(_snooker.simulate(scene(source)))
+
+
+def simulate_many(
+    scenes: Sequence[SceneLike],
+    threads: Optional[int] = None,
+    errors: str = "raise",
+) -> list:
+    """Simulates many scenes on ``threads`` threads (all cores by default), the GIL released,
+    the results in input order and bit-identical to one-by-one runs whatever the thread count.
+
+    Every scene is read first (a bad one raises ``ValueError`` naming its index before any is
+    simulated). A scene the engine could not simulate raises its ``SimulationError`` with
+    ``errors="raise"``; with ``errors="return"`` the error takes the shot's place in the list.
+    """
+    if errors not in ("raise", "return"):
+        raise ValueError(f'errors: "raise" or "return", not {errors!r}')
+    if threads is not None and (not isinstance(threads, int) or threads < 1):
+        raise ValueError(f"threads: a positive number of threads, not {threads!r}")
+    read = []
+    for i, s in enumerate(scenes):
+        read.append(scene(s, name=f"scenes[{i}]"))
+    out = []
+    for r in _snooker.simulate_many(read, threads):
+        if isinstance(r, SimulationError):
+            if errors == "raise":
+                raise r
+            out.append(r)
+        else:
+            out.append(Shot(r))
+    return out
+
+
+def plan(
+    source: SceneLike,
+    pot: str,
+    pocket: str,
+    cue_to: Sequence[float],
+    tolerance: float = 0.001,
+    noise: Union[str, dict, None] = None,
+    bounds: Union[str, dict, None] = None,
+    samples: int = 256,
+    alternatives: int = 3,
+    seed: int = 1,
+    cue_ball: str = "cue",
+) -> dict:
+    """Plans a shot as ``snooker plan`` does (thesis chapter 7): the strike that pots ``pot``
+    in ``pocket`` and leaves the cue ball nearest ``cue_to`` (x, y in m), ranked by its pot
+    probability under execution noise. Returns the plan document (formats.md, "Plan").
+
+    ``noise``: standard deviations, e.g. ``{"aim": 0.002, "speed": 0.02, "offset": 0.001}``
+    (rad, fraction, m) or the command's ``"aim=0.002,speed=0.02"``; ``bounds``: e.g.
+    ``{"speed": (0.3, 6.0)}`` or ``"speed=0.3..6"``. Bad requests raise ``ValueError``; a
+    ball that cannot be potted raises ``CannotPot``.
+    """
+
+    def spec(v: Union[str, dict, None], interval: bool) -> str:
+        if v is None:
+            return ""
+        if isinstance(v, str):
+            return v
+        if interval:
+            return ",".join(f"{k}={lo}..{hi}" for k, (lo, hi) in v.items())
+        return ",".join(f"{k}={x}" for k, x in v.items())
+
+    x, y = (float(c) for c in cue_to)
+    text = _snooker.plan(
+        scene(source),
+        pot,
+        pocket,
+        [x, y],
+        float(tolerance),
+        spec(noise, False),
+        spec(bounds, True),
+        int(samples),
+        int(alternatives),
+        int(seed),
+        cue_ball,
+    )
+    return json.loads(text)

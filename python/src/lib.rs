@@ -1,0 +1,247 @@
+//! The `snooker._snooker` extension module: scenes read by the scene crate, shots simulated by
+//! the engine with the GIL released (many on rayon's threads), plans by the planner. The
+//! Python layer (`snooker/__init__.py`) turns the JSON documents into dicts and the positions
+//! into NumPy arrays; errors carry the command line's messages.
+
+use pyo3::create_exception;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyBytes;
+use snooker_engine::SimError;
+use snooker_planner::{Bounds, Noise, PlanError, Request};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+create_exception!(
+    _snooker,
+    SimulationError,
+    PyRuntimeError,
+    "A valid scene that the engine could not simulate to its end (the event cap, the time \
+     limit, or an internal error: please report the scene)."
+);
+create_exception!(
+    _snooker,
+    CannotPot,
+    PyRuntimeError,
+    "No strike within the bounds pots the ball without a foul (blocked, snookered)."
+);
+
+/// A scene read and checked (the cue strike applied).
+#[pyclass(frozen, module = "snooker._snooker")]
+struct Scene(Arc<snooker_scene::Scene>);
+
+#[pymethods]
+impl Scene {
+    /// The scene's name.
+    #[getter]
+    fn name(&self) -> &str {
+        &self.0.name
+    }
+
+    /// The balls' ids, in the scene's order.
+    #[getter]
+    fn ball_ids(&self) -> Vec<String> {
+        self.0.setup.balls.iter().map(|b| b.id.clone()).collect()
+    }
+}
+
+fn bad_scene(e: snooker_scene::SceneError) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// Reads a scene file.
+#[pyfunction]
+fn load(path: PathBuf) -> PyResult<Scene> {
+    snooker_scene::load(&path)
+        .map(|s| Scene(Arc::new(s)))
+        .map_err(bad_scene)
+}
+
+/// Reads scene TOML text; `file` names it in error messages.
+#[pyfunction]
+fn parse_toml(text: &str, file: &str) -> PyResult<Scene> {
+    snooker_scene::parse(text, file)
+        .map(|s| Scene(Arc::new(s)))
+        .map_err(bad_scene)
+}
+
+/// Reads a scene given as JSON text (an object with the scene file's keys).
+#[pyfunction]
+fn parse_json(text: &str, file: &str) -> PyResult<Scene> {
+    snooker_scene::parse_json(text, file)
+        .map(|s| Scene(Arc::new(s)))
+        .map_err(bad_scene)
+}
+
+/// A simulated shot.
+#[pyclass(frozen, module = "snooker._snooker")]
+struct Shot {
+    scene: Arc<snooker_scene::Scene>,
+    shot: snooker_engine::Shot,
+}
+
+#[pymethods]
+impl Shot {
+    /// The result document of `snooker simulate --json`, as JSON text.
+    fn result_json(&self) -> String {
+        let doc = snooker_scene::result::result_json(&self.scene, &self.shot);
+        serde_json::to_string(&doc).expect("JSON of finite numbers")
+    }
+
+    /// The balls' ids, in the scene's order.
+    #[getter]
+    fn ball_ids(&self) -> Vec<String> {
+        self.shot.tracks.iter().map(|t| t.id.clone()).collect()
+    }
+
+    /// The pots, as in the result document without reading it whole: (ball, pocket, t).
+    fn pots(&self) -> Vec<(String, String, f64)> {
+        snooker_scene::result::departures(&self.shot, snooker_engine::EventKind::BallPocket)
+            .map(|(b, pocket, t)| (self.shot.tracks[b].id.clone(), pocket.to_string(), t))
+            .collect()
+    }
+
+    /// Every ball's final state, as in the result document without reading it whole:
+    /// (id, pos, vel, spin, motion).
+    #[allow(clippy::type_complexity)]
+    fn final_states(&self) -> Vec<(String, [f64; 3], [f64; 3], [f64; 3], &'static str)> {
+        let xyz = |v: snooker_engine::Vec3| [v.x, v.y, v.z];
+        self.shot
+            .tracks
+            .iter()
+            .zip(self.shot.final_states())
+            .map(|(t, s)| {
+                (
+                    t.id.clone(),
+                    xyz(s.pos),
+                    xyz(s.vel),
+                    xyz(s.spin),
+                    s.motion.name(),
+                )
+            })
+            .collect()
+    }
+
+    /// Simulated duration, s.
+    #[getter]
+    fn duration(&self) -> f64 {
+        self.shot.duration
+    }
+
+    /// Every ball's position (m) at each of `times` (s), from the exact trajectory: native
+    /// f64 bytes of shape (times, balls, 3). Times outside [0, duration] are refused.
+    fn positions<'py>(&self, py: Python<'py>, times: Vec<f64>) -> PyResult<Bound<'py, PyBytes>> {
+        if let Some(t) = times
+            .iter()
+            .find(|t| !(t.is_finite() && **t >= 0.0 && **t <= self.shot.duration))
+        {
+            return Err(PyValueError::new_err(format!(
+                "times: {t} s lies outside the shot, [0, {}] s",
+                self.shot.duration
+            )));
+        }
+        let p = &self.shot.params;
+        let mut out = Vec::with_capacity(times.len() * self.shot.tracks.len() * 3 * 8);
+        for &t in &times {
+            for track in &self.shot.tracks {
+                let s = track.state_at(t, p);
+                for v in [s.pos.x, s.pos.y, s.pos.z] {
+                    out.extend_from_slice(&v.to_ne_bytes());
+                }
+            }
+        }
+        Ok(PyBytes::new(py, &out))
+    }
+}
+
+fn sim_error(scene: &snooker_scene::Scene, e: SimError) -> PyErr {
+    SimulationError::new_err(format!("{}: {e}", scene.name))
+}
+
+/// Simulates a scene (the GIL released meanwhile).
+#[pyfunction]
+fn simulate(py: Python<'_>, scene: &Scene) -> PyResult<Shot> {
+    let sc = scene.0.clone();
+    let shot = py.detach(|| snooker_engine::simulate(&sc.setup, &sc.options));
+    match shot {
+        Ok(shot) => Ok(Shot { scene: sc, shot }),
+        Err(e) => Err(sim_error(&sc, e)),
+    }
+}
+
+/// Simulates many scenes on `threads` threads (all cores if None), the GIL released: per
+/// scene, its shot or the message of its failure, in input order.
+#[pyfunction]
+#[pyo3(signature = (scenes, threads=None))]
+fn simulate_many(
+    py: Python<'_>,
+    scenes: Vec<Py<Scene>>,
+    threads: Option<usize>,
+) -> PyResult<Vec<Py<PyAny>>> {
+    let arcs: Vec<Arc<snooker_scene::Scene>> = scenes.iter().map(|s| s.get().0.clone()).collect();
+    let shots = py
+        .detach(|| snooker_batch::simulate_many(&arcs, threads, || {}))
+        .map_err(|e| PyValueError::new_err(format!("threads: {e}")))?;
+    arcs.into_iter()
+        .zip(shots)
+        .map(|(scene, shot)| match shot {
+            Ok(shot) => Ok(Py::new(py, Shot { scene, shot })?.into_any()),
+            Err(e) => Ok(sim_error(&scene, e).into_value(py).into_any()),
+        })
+        .collect()
+}
+
+/// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as JSON text.
+#[pyfunction]
+#[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise="", bounds="",
+                    samples=256, alternatives=3, seed=1, cue_ball="cue"))]
+#[allow(clippy::too_many_arguments)]
+fn plan(
+    py: Python<'_>,
+    scene: &Scene,
+    pot: &str,
+    pocket: &str,
+    cue_to: [f64; 2],
+    tolerance: f64,
+    noise: &str,
+    bounds: &str,
+    samples: usize,
+    alternatives: usize,
+    seed: u64,
+    cue_ball: &str,
+) -> PyResult<String> {
+    let sc = scene.0.clone();
+    let p = sc.setup.params;
+    let bad = |e: PlanError| PyValueError::new_err(e.to_string());
+    let request = Request {
+        cue_ball: cue_ball.into(),
+        tolerance,
+        bounds: Bounds::default_for(&p).with_spec(bounds, &p).map_err(bad)?,
+        noise: Noise::default().with_spec(noise).map_err(bad)?,
+        samples,
+        alternatives,
+        seed,
+        ..Request::new(pot, pocket, cue_to, &p)
+    };
+    match py.detach(|| snooker_planner::plan(&sc, request)) {
+        Ok(plan) => Ok(serde_json::to_string(&plan).expect("JSON of finite numbers")),
+        Err(e @ PlanError::BadInput { .. }) => Err(bad(e)),
+        Err(e @ PlanError::CannotPot(_)) => Err(CannotPot::new_err(format!("{}: {e}", sc.name))),
+    }
+}
+
+/// The extension module.
+#[pymodule]
+fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Scene>()?;
+    m.add_class::<Shot>()?;
+    m.add_function(wrap_pyfunction!(load, m)?)?;
+    m.add_function(wrap_pyfunction!(parse_toml, m)?)?;
+    m.add_function(wrap_pyfunction!(parse_json, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
+    m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add("SimulationError", m.py().get_type::<SimulationError>())?;
+    m.add("CannotPot", m.py().get_type::<CannotPot>())?;
+    Ok(())
+}

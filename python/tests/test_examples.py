@@ -1,0 +1,34 @@
+"""The Gymnasium-style example environment (examples/gym_env.py): a straight pot is rewarded
+and the potted ball leaves the observation."""
+
+import math
+import pathlib
+import sys
+
+import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
+from gym_env import SnookerEnv  # noqa: E402
+
+
+def test_a_straight_pot_is_rewarded():
+    env = SnookerEnv(reds=1)
+    obs, _ = env.reset(seed=4)
+    assert obs.shape == (2, 2)
+    # The red on the line from the cue ball to the top-left corner pocket.
+    env.balls = {"cue": (3.2, 1.4), "red1": (3.4, 1.6)}
+    obs, reward, terminated, truncated, info = env.step([2.0, math.pi / 4, 0.0, 0.0, 0.0])
+    assert info["potted"] == ["red1"] and reward == 1.0 and terminated and not truncated
+    assert obs[1].tolist() == [-1.0, -1.0] and np.all(obs[0] > 0)
+
+
+def test_random_play_keeps_the_observation_on_the_table():
+    env = SnookerEnv(reds=3, max_shots=5)
+    obs, _ = env.reset(seed=2)
+    done = False
+    while not done:
+        obs, reward, terminated, truncated, _ = env.step(env.rng.uniform([0.5, -3, 0, 0, 0], [6, 3, 0, 0, 0]))
+        done = terminated or truncated
+        on = obs[obs[:, 0] >= 0]
+        assert np.all(on[:, 0] <= 3.569) and np.all(on[:, 1] <= 1.778)
+    assert env.shots <= 5
