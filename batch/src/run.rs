@@ -4,9 +4,9 @@
 
 use crate::input::Source;
 use rayon::prelude::*;
-use std::borrow::Borrow;
 use snooker_engine::{Shot, SimError};
 use snooker_scene::{Scene, SceneError};
+use std::borrow::Borrow;
 
 /// A thread count that cannot be used.
 #[derive(Debug, thiserror::Error)]
