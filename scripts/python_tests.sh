@@ -3,7 +3,7 @@
 # need from PyPI (maturin, pytest, numpy, pyarrow, ray), the package built into it by maturin
 # (sharing the workspace's target directory, so the engine crates are not built twice), its
 # formatting and lints, then its tests (python/tests) against the command line built by
-# `cargo test --workspace --release` (target/release/snooker).
+# `cargo test --workspace --profile ci` (target/ci/snooker).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv=target/py-venv
@@ -14,5 +14,5 @@ export CARGO_TARGET_DIR=$PWD/target PYO3_PYTHON=$PWD/$venv/bin/python
 cargo fmt --manifest-path python/Cargo.toml -- --check
 cargo clippy --manifest-path python/Cargo.toml --release --all-targets -- -D warnings
 (cd python && VIRTUAL_ENV=$PWD/../$venv PATH=$PWD/../$venv/bin:$PATH maturin develop --release --quiet)
-SNOOKER_CLI=$PWD/target/release/snooker RAY_AUTH_MODE=disabled \
+SNOOKER_CLI=$PWD/target/ci/snooker RAY_AUTH_MODE=disabled \
     "$venv/bin/python" -m pytest -q python/tests

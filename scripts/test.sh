@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The project's test command: formatting, lints, every test of the workspace in release mode
-# (physics in a debug build is ~80x slower), then 10,000 fuzz scenes, then the Python
-# package's tests (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, and a
-# TrueType font for the plots' text (DejaVu Sans: installed here from Debian's packages if
-# the machine lacks it).
+# The project's test command: formatting, lints, every test of the workspace optimised (physics
+# in a debug build is ~80x slower; the `ci` profile of Cargo.toml: release with lighter
+# dependencies), then 10,000 fuzz scenes, then the Python package's tests
+# (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, and a TrueType font for
+# the plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 font=""
@@ -21,10 +21,10 @@ if [ -z "$font" ]; then
     fi
 fi
 cargo fmt --all -- --check
-cargo clippy --workspace --all-targets --release -- -D warnings
-cargo test --workspace --release
+cargo clippy --workspace --all-targets --profile ci -- -D warnings
+cargo test --workspace --profile ci
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
 # (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml.
-cargo run --release -p snooker-fuzz -- --scenes 10000
+cargo run --profile ci -p snooker-fuzz -- --scenes 10000
 # The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
 scripts/python_tests.sh

@@ -24,26 +24,9 @@ pub fn check_output(path: &std::path::Path) -> Result<(), String> {
 /// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing
 /// is left half-written. Missing directories on the way are created.
 pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
-    use anyhow::Context;
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = path
-        .file_name()
-        .context("the output path has no file name")?;
-    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let tmp = dir.join(format!(".{}.tmp", name.to_string_lossy()));
-    let written = std::fs::write(&tmp, text)
-        .with_context(|| format!("cannot write {}", tmp.display()))
-        .and_then(|()| {
-            std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))
-        });
-    if written.is_err() {
-        // Leave nothing behind; the temporary file may not even exist.
-        let _ = std::fs::remove_file(&tmp);
-    }
-    written
+    let mut file = AtomicFile::create(path)?;
+    file.write(text)?;
+    file.commit()
 }
 
 /// A file written piece by piece and put in place whole: the pieces go to a temporary file

@@ -13,7 +13,9 @@
 //! | `ball`, `x`, `y`, `z`, `motion` | lists of string, f64 (m) x 3, string | every ball at the end |
 
 use crate::Summary;
-use arrow_array::builder::{Float64Builder, ListBuilder, StringBuilder, UInt64Builder};
+use arrow_array::builder::{
+    ArrayBuilder, Float64Builder, ListBuilder, StringBuilder, UInt64Builder,
+};
 use arrow_array::{ArrayRef, RecordBatch};
 use std::sync::Arc;
 
@@ -22,28 +24,30 @@ use std::sync::Arc;
 #[error("cannot write the Parquet table: {0}")]
 pub struct TableError(String);
 
-/// A list-of-strings column.
-fn strings(rows: &[Summary], f: impl Fn(&Summary) -> Vec<&str>) -> ArrayRef {
-    let mut b = ListBuilder::new(StringBuilder::new());
+/// A list column: per row, the values `f` gives, appended by `push`.
+fn list<'a, B: ArrayBuilder + Default, T>(
+    rows: &'a [Summary],
+    f: impl Fn(&'a Summary) -> Vec<T>,
+    push: impl Fn(&mut B, T),
+) -> ArrayRef {
+    let mut b = ListBuilder::new(B::default());
     for r in rows {
-        for s in f(r) {
-            b.values().append_value(s);
+        for v in f(r) {
+            push(b.values(), v);
         }
         b.append(true);
     }
     Arc::new(b.finish())
 }
 
+/// A list-of-strings column.
+fn strings<'a>(rows: &'a [Summary], f: impl Fn(&'a Summary) -> Vec<&'a str>) -> ArrayRef {
+    list(rows, f, |b: &mut StringBuilder, s| b.append_value(s))
+}
+
 /// A list-of-f64 column.
 fn floats(rows: &[Summary], f: impl Fn(&Summary) -> Vec<f64>) -> ArrayRef {
-    let mut b = ListBuilder::new(Float64Builder::new());
-    for r in rows {
-        for v in f(r) {
-            b.values().append_value(v);
-        }
-        b.append(true);
-    }
-    Arc::new(b.finish())
+    list(rows, f, |b: &mut Float64Builder, v| b.append_value(v))
 }
 
 /// The rows as an Arrow record batch (the columns above).

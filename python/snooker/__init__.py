@@ -34,6 +34,8 @@ __all__ = [
     "simulate",
     "simulate_many",
     "plan",
+    "impact_ball_ball",
+    "impact_cushion",
 ]
 
 Scene = _snooker.Scene
@@ -208,3 +210,44 @@ def plan(
         cue_ball,
     )
     return json.loads(text)
+
+
+def _overrides(params: Optional[dict]) -> list:
+    return [f"{k}={v}" for k, v in (params or {}).items()]
+
+
+def impact_ball_ball(
+    speed: float,
+    cut: float = 0.0,
+    topspin: float = 0.0,
+    sidespin: float = 0.0,
+    params: Optional[dict] = None,
+) -> dict:
+    """One ball-ball impact of the thesis's frictional model, as ``snooker impact ball-ball
+    --json``: a cue ball moving along +x at ``speed`` (m/s) with ``topspin`` and ``sidespin``
+    (units of V/R; 1 = rolling) meets a resting object ball at ``cut`` degrees (0 = full
+    ball). ``params`` overrides parameters by name (e.g. ``{"mu_ball": 0.06}``). Returns the
+    report: each ball just after the impact and once its slip has ended, and the impulse."""
+    return json.loads(
+        _snooker.impact_ball_ball(
+            float(speed), float(cut), float(topspin), float(sidespin), _overrides(params)
+        )
+    )
+
+
+def impact_cushion(
+    speed: float,
+    angle: float = 90.0,
+    topspin: float = 0.0,
+    sidespin: float = 0.0,
+    params: Optional[dict] = None,
+) -> dict:
+    """One cushion impact of the thesis's model, as ``snooker impact cushion --json``: a ball
+    at ``speed`` (m/s), ``angle`` degrees from the cushion line (90 = perpendicular), with
+    ``topspin`` and ``sidespin`` (units of V/R). Returns the report (the ball after the impact
+    and after its slip, its rebound angle, the impulse)."""
+    return json.loads(
+        _snooker.impact_cushion(
+            float(speed), float(angle), float(topspin), float(sidespin), _overrides(params)
+        )
+    )

@@ -49,3 +49,17 @@ def plan(
     seed: int = 1,
     cue_ball: str = "cue",
 ) -> str: ...
+def impact_ball_ball(
+    speed: float,
+    cut: float = 0.0,
+    topspin: float = 0.0,
+    sidespin: float = 0.0,
+    params: Sequence[str] = (),
+) -> str: ...
+def impact_cushion(
+    speed: float,
+    angle: float = 90.0,
+    topspin: float = 0.0,
+    sidespin: float = 0.0,
+    params: Sequence[str] = (),
+) -> str: ...

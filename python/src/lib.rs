@@ -9,6 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use snooker_engine::SimError;
 use snooker_planner::{Bounds, Noise, PlanError, Request};
+use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -230,6 +231,61 @@ fn plan(
     }
 }
 
+/// The report of one impact (as `snooker impact --json`), as JSON text: `cut` (ball-ball,
+/// degrees) or `angle` (cushion, degrees) says which; `params` are NAME=VALUE overrides.
+fn impact(
+    geometry: Geometry,
+    speed: f64,
+    topspin: f64,
+    sidespin: f64,
+    params: Vec<String>,
+) -> PyResult<String> {
+    let bad = |e: String| PyValueError::new_err(e);
+    let params = snooker_scene::override_params(snooker_engine::Params::default(), &params)
+        .map_err(|e| bad(e.to_string()))?;
+    let spec = ImpactSpec {
+        geometry,
+        speed,
+        topspin,
+        sidespin,
+        params,
+    };
+    let report = impact_report(&spec, None).map_err(|e| bad(e.to_string()))?;
+    Ok(serde_json::to_string(&report.doc).expect("JSON of finite numbers"))
+}
+
+/// A cue ball moving along +x at `speed` (m/s) meets a resting object ball at `cut` degrees.
+#[pyfunction]
+#[pyo3(signature = (speed, cut=0.0, topspin=0.0, sidespin=0.0, params=Vec::new()))]
+fn impact_ball_ball(
+    speed: f64,
+    cut: f64,
+    topspin: f64,
+    sidespin: f64,
+    params: Vec<String>,
+) -> PyResult<String> {
+    impact(Geometry::BallBall { cut }, speed, topspin, sidespin, params)
+}
+
+/// A ball meets a cushion at `speed` (m/s), `angle` degrees from the cushion line.
+#[pyfunction]
+#[pyo3(signature = (speed, angle=90.0, topspin=0.0, sidespin=0.0, params=Vec::new()))]
+fn impact_cushion(
+    speed: f64,
+    angle: f64,
+    topspin: f64,
+    sidespin: f64,
+    params: Vec<String>,
+) -> PyResult<String> {
+    impact(
+        Geometry::Cushion { angle },
+        speed,
+        topspin,
+        sidespin,
+        params,
+    )
+}
+
 /// The extension module.
 #[pymodule]
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -241,6 +297,8 @@ fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add_function(wrap_pyfunction!(impact_ball_ball, m)?)?;
+    m.add_function(wrap_pyfunction!(impact_cushion, m)?)?;
     m.add("SimulationError", m.py().get_type::<SimulationError>())?;
     m.add("CannotPot", m.py().get_type::<CannotPot>())?;
     Ok(())

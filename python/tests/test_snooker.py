@@ -128,3 +128,28 @@ def test_the_batch_table_reads_in_pyarrow(tmp_path):
         assert row["ball"] == shot.ball_ids
         assert row["x"] == [shot.final[b]["pos"][0] for b in shot.ball_ids]
         assert row["pot_ball"] == [p["ball"] for p in shot.pots]
+
+
+@pytest.mark.parametrize(
+    "call, args",
+    [
+        (lambda: snooker.impact_ball_ball(2.0, cut=30, topspin=1.0, params={"mu_ball": 0.06}),
+         ["ball-ball", "--speed", "2", "--cut", "30", "--topspin", "1", "--param", "mu_ball=0.06"]),
+        (lambda: snooker.impact_cushion(1.5, angle=45, sidespin=-0.5),
+         ["cushion", "--speed", "1.5", "--angle", "45", "--sidespin", "-0.5"]),
+    ],
+)
+def test_impacts_equal_the_cli(call, args):
+    out = cli("impact", *args, "--json")
+    assert out.returncode == 0, out.stderr
+    assert call() == json.loads(out.stdout)
+
+
+def test_bad_impacts_raise_the_cli_messages():
+    out = cli("impact", "ball-ball", "--speed", "30", "--json")
+    assert out.returncode == 2
+    with pytest.raises(ValueError) as e:
+        snooker.impact_ball_ball(30.0)
+    assert str(e.value) == out.stderr.strip().removeprefix("error: ")
+    with pytest.raises(ValueError, match="mu_bal"):
+        snooker.impact_cushion(1.0, params={"mu_bal": 0.1})

@@ -14,6 +14,7 @@
 pub mod build;
 pub mod error;
 pub mod file;
+pub mod impact_report;
 pub mod json_input;
 pub mod model;
 pub mod params;

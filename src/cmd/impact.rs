@@ -5,17 +5,10 @@
 
 use super::bad_input;
 use crate::plot;
-use anyhow::bail;
-use serde_json::{Value, json};
-use snooker_engine::impact::ball_ball::mathavan as bb;
-use snooker_engine::impact::cushion::mathavan as cush;
+use serde_json::Value;
+use snooker_engine::Params;
 use snooker_engine::impact::impulse::Sample;
-use snooker_engine::impact::incoming;
-use snooker_engine::motion::{self, airborne};
-use snooker_engine::sim::setup::MAX_SPIN_SPEED;
-use snooker_engine::{
-    Ball, BallKind, BallState, Models, Motion, Params, Setup, SimOptions, Table, Vec3, simulate,
-};
+use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -70,11 +63,6 @@ enum Kind {
     },
 }
 
-/// Fastest incoming ball accepted, m/s.
-const MAX_SPEED: f64 = 20.0;
-/// Largest spin accepted, units of V/R.
-const MAX_SPIN: f64 = 10.0;
-
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let (doc, samples, axes) = match impact(&args) {
@@ -100,159 +88,24 @@ pub fn run(args: Args) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// One ball's state, as reported.
-fn describe(s: &BallState) -> Value {
-    let v = Vec3::new(s.vel.x, s.vel.y, 0.0);
-    json!({
-        "speed": v.norm(),
-        "direction_deg": v.y.atan2(v.x).to_degrees(),
-        "vertical_speed": s.vel.z,
-        "spin": [s.spin.x, s.spin.y, s.spin.z],
-        "sidespin": s.spin.z,
-        "motion": s.motion.name(),
-    })
-}
-
-/// What happens to a ball after an impact until its slip on the cloth ends, run by the engine
-/// on the open table: its hop, if it left the cloth, then its slide. The ball's state once its
-/// slip has ended (rolling, spinning or at rest; still sliding if the cloth has no friction),
-/// the hop's peak height and length, and the distance covered until then.
-fn after_slip(s: BallState, p: &Params) -> anyhow::Result<(BallState, f64, f64, f64)> {
-    let setup = Setup {
-        table: Table::open(),
-        params: *p,
-        models: Models::default(),
-        balls: vec![Ball {
-            id: "ball".into(),
-            kind: BallKind::Other,
-            state: s,
-        }],
-    };
-    let opts = SimOptions {
-        horizon: Some(SimOptions::default().max_time),
-        ..SimOptions::default()
-    };
-    let shot = simulate(&setup, &opts)?;
-    let segments = &shot.tracks[0].segments;
-    let first = segments[0].state;
-    let (hop_height, hop_length) = if first.motion == Motion::Airborne {
-        let landed = segments[1..].first().map_or(first.pos, |g| g.state.pos);
-        let length = Vec3::new(landed.x - first.pos.x, landed.y - first.pos.y, 0.0).norm();
-        (airborne::peak_height(&first, p), length)
-    } else {
-        (0.0, 0.0)
-    };
-    let end = segments
-        .iter()
-        .find(|g| !matches!(g.state.motion, Motion::Sliding | Motion::Airborne))
-        .map_or_else(|| shot.final_states()[0], |g| g.state);
-    let dist = Vec3::new(end.pos.x - s.pos.x, end.pos.y - s.pos.y, 0.0).norm();
-    Ok((end, hop_height, hop_length, dist))
-}
-
-/// The report of one ball after the impact.
-fn ball_report(s: BallState, p: &Params) -> anyhow::Result<serde_json::Map<String, Value>> {
-    let (rolled, hop_height, hop_length, dist) = after_slip(s, p)?;
-    let mut m = serde_json::Map::new();
-    m.insert("after_impact".into(), describe(&motion::settle(s, p)));
-    m.insert("after_slip".into(), describe(&rolled));
-    m.insert("hop_height".into(), json!(hop_height));
-    m.insert("hop_length".into(), json!(hop_length));
-    m.insert("distance_to_end_of_slip".into(), json!(dist));
-    Ok(m)
-}
-
-/// The result document, the samples for a plot and their axes.
+/// The result document (the scene crate's impact report), the samples for a plot and their
+/// axes.
 fn impact(args: &Args) -> anyhow::Result<(Value, Vec<Sample>, plot::SlipAxes)> {
-    let p = snooker_scene::override_params(Params::default(), &args.params)?;
-    let (inc, angle) = match &args.which {
-        Kind::BallBall { incoming, cut } => (incoming, *cut),
-        Kind::Cushion { incoming, angle } => (incoming, *angle),
+    let params = snooker_scene::override_params(Params::default(), &args.params)?;
+    let (inc, geometry) = match &args.which {
+        Kind::BallBall { incoming, cut } => (incoming, Geometry::BallBall { cut: *cut }),
+        Kind::Cushion { incoming, angle } => (incoming, Geometry::Cushion { angle: *angle }),
     };
-    let speed = inc.speed;
-    if !(speed.is_finite() && speed > 0.0 && speed <= MAX_SPEED) {
-        bail!("--speed must lie in (0, {MAX_SPEED}] m/s, got {speed}");
-    }
-    for (name, v) in [("--topspin", inc.topspin), ("--sidespin", inc.sidespin)] {
-        if !(v.is_finite() && v.abs() <= MAX_SPIN) {
-            bail!("{name} must lie in [-{MAX_SPIN}, {MAX_SPIN}] (units of V/R), got {v}");
-        }
-    }
-    let surface = speed * inc.topspin.hypot(inc.sidespin);
-    if surface > MAX_SPIN_SPEED {
-        bail!(
-            "--speed {speed} with these spins gives the ball a surface speed R|w| of {surface} \
-             m/s, beyond any shot (at most {MAX_SPIN_SPEED} m/s)"
-        );
-    }
+    let spec = ImpactSpec {
+        geometry,
+        speed: inc.speed,
+        topspin: inc.topspin,
+        sidespin: inc.sidespin,
+        params,
+    };
     let mut trace = Vec::new();
-    let mut doc = serde_json::Map::new();
-    let axes: plot::SlipAxes;
-    let setup = match &args.which {
-        Kind::BallBall { .. } => {
-            if !(angle.is_finite() && angle.abs() < 89.0) {
-                bail!("--cut must lie in (-89, 89) degrees");
-            }
-            let (cue, obj) =
-                incoming::ball_ball(speed, angle.to_radians(), inc.topspin, inc.sidespin, &p);
-            let out = bb::solve(&cue, &obj, &p, Some(&mut trace))?;
-            let after = |s: &BallState, i: usize| BallState {
-                vel: out.after.vel[i],
-                spin: out.after.spin[i],
-                ..*s
-            };
-            let n = (obj.pos - cue.pos).normalize();
-            axes = (n.cross(&Vec3::z()).normalize(), Vec3::z());
-            doc.insert("cue_ball".into(), ball_report(after(&cue, 0), &p)?.into());
-            doc.insert(
-                "object_ball".into(),
-                ball_report(after(&obj, 1), &p)?.into(),
-            );
-            doc.insert("impulse".into(), json!(out.impulse));
-            "ball-ball"
-        }
-        Kind::Cushion { .. } => {
-            if !(angle.is_finite() && angle > 0.0 && angle <= 90.0) {
-                bail!("--angle must lie in (0, 90] degrees");
-            }
-            let rad = angle.to_radians();
-            let ball = incoming::cushion(speed, rad, inc.topspin, inc.sidespin, &p);
-            let out = cush::solve(&ball, Vec3::y(), &p, Some(&mut trace))?;
-            let b1 = BallState {
-                vel: out.after.vel[0],
-                spin: out.after.spin[0],
-                ..ball
-            };
-            let n = cush::contact(&ball, Vec3::y(), &p).normal;
-            axes = (Vec3::x(), n.cross(&Vec3::x()));
-            let mut report = ball_report(b1, &p)?;
-            report.insert(
-                "rebound_angle_deg".into(),
-                json!(b1.vel.y.atan2(b1.vel.x.abs()).to_degrees()),
-            );
-            doc.insert("ball".into(), report.into());
-            doc.insert("impulse".into(), json!(out.impulse));
-            doc.insert("normal_speed".into(), json!(speed * rad.sin()));
-            "cushion"
-        }
-    };
-    let input = json!({
-        "setup": setup,
-        "speed": speed,
-        "angle_deg": angle,
-        "topspin_v_over_r": inc.topspin,
-        "sidespin_v_over_r": inc.sidespin,
-        "mu_ball": p.mu_ball, "e_ball": p.e_ball, "mu_cushion": p.mu_cushion,
-        "e_cushion": p.e_cushion, "mu_slide": p.mu_slide,
-    });
-    let mut out = serde_json::Map::new();
-    out.insert("input".into(), input);
-    out.extend(doc);
-    out.insert(
-        "units".into(),
-        json!("SI; directions in degrees from the incoming ball's path (ball-ball) or the cushion line (cushion)"),
-    );
-    Ok((Value::Object(out), trace, axes))
+    let report = impact_report(&spec, Some(&mut trace))?;
+    Ok((report.doc, trace, report.axes))
 }
 
 /// A text rendering of the result document.
