@@ -260,3 +260,40 @@ fn a_cloth_slip_at_the_root_of_its_rate_goes_on() {
     "#);
     assert!(impact_near(&scene, &shot, "red1", 3.2268606572627063));
 }
+
+#[test]
+fn a_grazing_touch_is_the_separation_push_alone() {
+    // Found (10^6 run, scene 454506 of seed 20261123): "the integration did not converge".
+    // The cue ball, frozen to the top cushion and struck up and along it, met the nose at
+    // 4e-17 m/s: the frictional solver, scaled by that approach, saw slips 1e16 times it. An
+    // approach below GRAZING_APPROACH is now a touch: the push to MIN_SEPARATION alone.
+    let (scene, shot) = run(r#"
+        params = {mu_slide = 0.06652428561027013, cue_tip_radius = 0.01756223571637305,
+                  e_ball = 0.2998595891017266, e_cushion_falloff = 0.4889058612536352,
+                  cushion_height = 0.029556995961064834}
+        cue = {ball = "cue", speed = 14.641250401506198, aim = -0.11088727284784827,
+               offset = [-0.00024829470702016624, 0.006498109533248337],
+               elevation = 0.17484167222020003}
+        balls = [
+          {id = "cue", pos = [3.543015955316437, 0.7105537596925445]},
+          {id = "red1", pos = [3.524933311178241, 0.7597348330945287]},
+          {id = "yellow", pos = [3.4809814582761516, 0.7312042420303196]},
+          {id = "red3", pos = [0.02598404468356292, 1.4556738131534568]},
+          {id = "green", pos = [0.02598404468356292, 0.7660762497393976]},
+          {id = "red5", pos = [3.514588719284796, 0.8111035922634835]},
+        ]
+    "#);
+    let touches: Vec<_> = shot
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallCushion && e.t == 0.0)
+        .map(|e| e.normal_speed.unwrap())
+        .collect();
+    assert!(impact_near(&scene, &shot, "cue", 0.0));
+    assert!(
+        touches
+            .iter()
+            .any(|&vn| vn < snooker_engine::impact::GRAZING_APPROACH),
+        "{touches:?}"
+    );
+}

@@ -12,7 +12,7 @@ pub mod sweep;
 use serde::{Deserialize, Serialize};
 
 pub use ball_ball::BallBallModel;
-pub use separation::MIN_SEPARATION;
+pub use separation::{GRAZING_APPROACH, MIN_SEPARATION};
 
 pub use cushion::{CushionContact, CushionModel};
 pub use impulse::ImpactError;

@@ -15,7 +15,7 @@ pub mod shot;
 
 use crate::ball::{BallState, Motion, Vec3};
 use crate::detect::{self, cushion, cushion::NoseEdge};
-use crate::impact::{CushionContact, separation};
+use crate::impact::{CushionContact, GRAZING_APPROACH, separation};
 use crate::motion;
 use crate::params::Params;
 use crate::table::{Cushion, Jaw};
@@ -331,12 +331,15 @@ impl Sim<'_> {
             e_cushion: p.e_cushion_at(vn),
             ..p
         };
-        let mut s2 = self
-            .setup
-            .models
-            .cushion
-            .resolve(&s, contact, &pe)
-            .map_err(|err| self.impact_error(&[i], err))?;
+        let mut s2 = if vn < GRAZING_APPROACH {
+            s
+        } else {
+            self.setup
+                .models
+                .cushion
+                .resolve(&s, contact, &pe)
+                .map_err(|err| self.impact_error(&[i], err))?
+        };
         let away = match contact {
             CushionContact::OnCloth { normal } => normal,
             CushionContact::InAir { towards } => -towards,
@@ -414,12 +417,15 @@ impl Sim<'_> {
                 let (a, b) = (self.current(e.a), self.current(other));
                 let n = (b.pos - a.pos).normalize();
                 let approach = (a.vel - b.vel).dot(&n);
-                let (mut a2, mut b2) = self
-                    .setup
-                    .models
-                    .ball_ball
-                    .resolve(&a, &b, &p)
-                    .map_err(|err| self.impact_error(&[e.a, other], err))?;
+                let (mut a2, mut b2) = if approach < GRAZING_APPROACH {
+                    (a, b)
+                } else {
+                    self.setup
+                        .models
+                        .ball_ball
+                        .resolve(&a, &b, &p)
+                        .map_err(|err| self.impact_error(&[e.a, other], err))?
+                };
                 separation::separate_balls(&mut a2, &mut b2, n);
                 Resolved {
                     kind: EventKind::BallBall,
