@@ -35,7 +35,7 @@ commit = f", at commit {sys.argv[2]}" if len(sys.argv) > 2 else ""
 head=(f"**The run of 10⁶ scenes** (seed {seed}{commit}, in parts of 50,000 with\n`--from`; `scripts/fuzz_report.py LOG_DIR COMMIT` makes this table from the parts' logs): "+
  (f"**{fails} failures** in {c(n)} scenes." if done else f"under way; the first {c(n)} scenes have **{fails} failures**.")+" Their endings:\n\n")
 body=(f"\nNo shot on a physical cloth needed the event cap or ran out of time. Why the cloth of each\nshot that did not finish was near-frictionless (the first reason that applies): a sliding\ndeceleration below 0.05 g0, {r(M,'sliding deceleration < 0.05 g0')} still moving and {r(E,'sliding deceleration < 0.05 g0')} at the cap; a rolling deceleration below\n0.005 g0, {r(M,'rolling deceleration < 0.005 g0')} and {r(E,'rolling deceleration < 0.005 g0')}; sidespin decay below 5 rad/s², {r(M,'sidespin decay < 5 rad/s^2')} and {r(E,'sidespin decay < 5 rad/s^2')}; tilt and nap above half the\nrolling resistance, {r(M,'tilt and nap > half the rolling resistance')} and {r(E,'tilt and nap > half the rolling resistance')}. No scene was stuck at an instant, no impact failed, nothing\nnon-finite, no panic, every scene deterministic.")
-i=s.index("**The run of 10⁶ scenes**"); j=s.index(" (An earlier run of 150,000 scenes", i)
+i=s.index("**The run of 10⁶ scenes**"); j=s.index(" Earlier long runs and what", i)
 s=s[:i]+head+table+body+s[j:]
 open(f,'w').write(s)
 print(n,fails,extra)

@@ -38,7 +38,13 @@ pub struct Sweep {
 pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
     let p = &shot.params;
     let r = p.ball_radius;
-    let contact = p.cushion_contact_distance();
+    // How near (plan) a ball's centre may come to a nose line at height z: the nose edge, at
+    // the cushion's height, is then R from it (on the cloth, R cos theta); a ball whose lowest
+    // point is above the nose can fly over it, and leaves play by its own event.
+    let reach = |z: f64| {
+        let rise = p.cushion_height - z;
+        (z < p.cushion_height + r).then(|| (r * r - rise * rise).max(0.0).sqrt())
+    };
     let mut times: Vec<f64> = Vec::new();
     let n = (shot.duration / dt).ceil() as usize;
     times.extend((0..=n).map(|k| (k as f64 * dt).min(shot.duration)));
@@ -61,7 +67,8 @@ pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
             if out.non_finite.is_none() && !a.is_finite() {
                 out.non_finite = Some((t, shot.tracks[i].id.clone()));
             }
-            if out.escaped.is_none() && !setup.table.holds(a.pos, contact, 1e-6) {
+            let on_table = reach(a.pos.z).is_none_or(|c| setup.table.holds(a.pos, c, 1e-6));
+            if out.escaped.is_none() && !on_table {
                 out.escaped = Some((t, shot.tracks[i].id.clone()));
             }
             for (j, b) in states.iter().enumerate().skip(i + 1) {
