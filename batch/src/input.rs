@@ -88,7 +88,10 @@ pub fn read(path: &Path) -> Result<Vec<Source>, InputError> {
     } else if path.exists() {
         return Err(InputError::Kind(shown));
     } else {
-        return Err(unreadable(std::io::ErrorKind::NotFound.into()));
+        return Err(InputError::Unreadable {
+            path: shown,
+            reason: "no such file or directory".into(),
+        });
     };
     if sources.is_empty() {
         return Err(InputError::Empty(shown));
