@@ -212,8 +212,11 @@ def plan(
     return json.loads(text)
 
 
-def _overrides(params: Optional[dict]) -> list:
-    return [f"{k}={v}" for k, v in (params or {}).items()]
+def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> dict:
+    """Calls a native impact report with the command line's NAME=VALUE overrides."""
+    overrides = [f"{k}={v}" for k, v in (params or {}).items()]
+    text = native(float(speed), float(angle), float(topspin), float(sidespin), overrides)
+    return json.loads(text)
 
 
 def impact_ball_ball(
@@ -228,11 +231,7 @@ def impact_ball_ball(
     (units of V/R; 1 = rolling) meets a resting object ball at ``cut`` degrees (0 = full
     ball). ``params`` overrides parameters by name (e.g. ``{"mu_ball": 0.06}``). Returns the
     report: each ball just after the impact and once its slip has ended, and the impulse."""
-    return json.loads(
-        _snooker.impact_ball_ball(
-            float(speed), float(cut), float(topspin), float(sidespin), _overrides(params)
-        )
-    )
+    return _impact(_snooker.impact_ball_ball, speed, cut, topspin, sidespin, params)
 
 
 def impact_cushion(
@@ -246,8 +245,4 @@ def impact_cushion(
     at ``speed`` (m/s), ``angle`` degrees from the cushion line (90 = perpendicular), with
     ``topspin`` and ``sidespin`` (units of V/R). Returns the report (the ball after the impact
     and after its slip, its rebound angle, the impulse)."""
-    return json.loads(
-        _snooker.impact_cushion(
-            float(speed), float(angle), float(topspin), float(sidespin), _overrides(params)
-        )
-    )
+    return _impact(_snooker.impact_cushion, speed, angle, topspin, sidespin, params)
