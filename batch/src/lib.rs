@@ -19,6 +19,7 @@
 pub mod input;
 pub mod line;
 pub mod run;
+pub mod sets;
 pub mod summary;
 #[cfg(feature = "parquet")]
 pub mod table;

@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use snooker_engine::cue::{self, Cue};
 use snooker_engine::table::layout;
 use snooker_engine::{
-    Ball, BallKind, BallState, Models, Params, Setup, SimOptions, Table, simulate,
+    Ball, BallKind, BallState, Models, Params, Setup, SimOptions, Table, Vec3, motion, simulate,
 };
 
 fn snooker_setup(balls: Vec<Ball>) -> Setup {
@@ -113,5 +113,28 @@ fn break_offs_at_many_angles() {
         let setup = snooker_setup(balls);
         let shot = simulate(&setup, &SimOptions::default()).expect("simulation failed");
         common::check_shot(&setup, &shot);
+    }
+}
+
+fn vec3() -> impl Strategy<Value = Vec3> {
+    (-5.0f64..5.0, -5.0f64..5.0, -1.0f64..1.0).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, .. ProptestConfig::default() })]
+
+    /// The bound the contact searches are culled by (`Path::clearance`) never exceeds the
+    /// distance from the origin found by sampling the path finely: a culled search could not
+    /// have found a contact.
+    #[test]
+    fn culling_bound_is_below_the_sampled_distance(
+        c in vec3(), b in vec3(), a in vec3(), window in 1e-6f64..2.0,
+    ) {
+        let path = motion::Path { c, b, a };
+        let sampled = (0..=20_000)
+            .map(|k| path.at(window * k as f64 / 20_000.0).norm())
+            .fold(f64::INFINITY, f64::min);
+        let bound = path.clearance(window);
+        prop_assert!(bound <= sampled + 1e-12 * path.size(window), "{bound} > {sampled}");
     }
 }

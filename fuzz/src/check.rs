@@ -4,6 +4,7 @@
 use crate::generate::{Generated, Kind, unphysical_cloth};
 use snooker_engine::audit::{self, MAX_OVERLAP};
 use snooker_engine::{Shot, SimError, SimOptions, simulate};
+use std::hash::{DefaultHasher, Hash, Hasher};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 /// Simulated time after which a shot on a near-frictionless cloth is stopped, s.
@@ -59,6 +60,9 @@ pub struct Verdict {
     pub unphysical: Option<&'static str>,
     /// Why it fails the harness, if it does.
     pub failure: Option<String>,
+    /// A hash of the result (every event's time, balls and states, the final states; or the
+    /// error's message), so that a change meant to leave every bit alone can be checked.
+    pub digest: u64,
 }
 
 fn sim_ending(e: &SimError) -> Ending {
@@ -72,19 +76,24 @@ fn sim_ending(e: &SimError) -> Ending {
     }
 }
 
-/// True when two shots are the same to the bit.
-fn identical(a: &Shot, b: &Shot) -> bool {
-    let bits = |s: &Shot| {
-        let mut v: Vec<u64> = vec![s.duration.to_bits(), s.events.len() as u64];
-        for e in &s.events {
-            v.push(e.t.to_bits());
-            v.extend(e.balls.iter().map(|&b| b as u64));
-            v.extend(e.after.iter().flat_map(|st| st.to_bits()));
-        }
-        v.extend(s.final_states().iter().flat_map(|st| st.to_bits()));
-        v
-    };
-    bits(a) == bits(b)
+/// A shot's numbers as bits: its duration, every event's time, balls and states after, and the
+/// final states.
+fn bits(s: &Shot) -> Vec<u64> {
+    let mut v: Vec<u64> = vec![s.duration.to_bits(), s.events.len() as u64];
+    for e in &s.events {
+        v.push(e.t.to_bits());
+        v.extend(e.balls.iter().map(|&b| b as u64));
+        v.extend(e.after.iter().flat_map(|st| st.to_bits()));
+    }
+    v.extend(s.final_states().iter().flat_map(|st| st.to_bits()));
+    v
+}
+
+/// A stable hash (std's SipHash with fixed keys) of `x`.
+fn digest(x: impl Hash) -> u64 {
+    let mut h = DefaultHasher::new();
+    x.hash(&mut h);
+    h.finish()
 }
 
 /// Runs `g` and checks it.
@@ -101,6 +110,7 @@ pub fn check(g: &Generated) -> Verdict {
             physical: g.physical,
             unphysical: None,
             failure: Some(format!("panic: {why}")),
+            digest: digest(why),
         }
     })
 }
@@ -120,17 +130,19 @@ fn check_inner(g: &Generated) -> Verdict {
                 ending: Ending::Rejected,
                 physical: g.physical,
                 unphysical: None,
+                digest: digest(e.to_string()),
                 failure,
             };
         }
     };
     let unphysical = unphysical_cloth(&scene.setup.params);
     let physical = unphysical.is_none();
-    let verdict = |ending, failure| Verdict {
+    let verdict = |ending, failure, digest| Verdict {
         ending,
         physical,
         unphysical,
         failure,
+        digest,
     };
     // On a near-frictionless cloth not stopping is no failure: the shot is cut short (every
     // invariant still checked up to there), so that one such shot does not take minutes.
@@ -147,8 +159,8 @@ fn check_inner(g: &Generated) -> Verdict {
     let second = simulate(&scene.setup, &options);
     let shot = match (first, second) {
         (Ok(a), Ok(b)) => {
-            if !identical(&a, &b) {
-                return verdict(Ending::AtRest, Some("not deterministic".into()));
+            if bits(&a) != bits(&b) {
+                return verdict(Ending::AtRest, Some("not deterministic".into()), 0);
             }
             a
         }
@@ -162,16 +174,17 @@ fn check_inner(g: &Generated) -> Verdict {
                     _ => Some(format!("{} (exit 1): {a}", ending.name())),
                 }
             };
-            return verdict(ending, failure);
+            return verdict(ending, failure, digest(a.to_string()));
         }
         (a, b) => {
             let why = format!("not deterministic: {:?} / {:?}", a.err(), b.err());
-            return verdict(Ending::AtRest, Some(why));
+            return verdict(Ending::AtRest, Some(why), 0);
         }
     };
     let broken = audit::events(&shot, MAX_OVERLAP);
     verdict(
         Ending::AtRest,
         audit::report(&broken[..broken.len().min(5)]),
+        digest(bits(&shot)),
     )
 }

@@ -3,7 +3,8 @@
 //!
 //! `cargo run --release -p snooker-fuzz -- --scenes 10000 [--seed S] [--out failures.toml]`
 //! (a fresh seed, printed, when none is given). `--only K --seed S` reruns scene K alone and
-//! prints its scene file; `--from K` starts at scene K (a long run in parts).
+//! prints its scene file; `--from K` starts at scene K (a long run in parts). The printed digest
+//! hashes every result: a change meant to leave every bit alone must leave it alone.
 
 mod check;
 mod generate;
@@ -121,6 +122,12 @@ fn main() -> ExitCode {
         "seed {seed}: scenes {first}..{end} ({} scenes), {failed} failing",
         end - first
     );
+    // One hash of every result in scene order: equal before and after a change that should
+    // leave every bit of every shot alone.
+    let digest = results
+        .iter()
+        .fold(0u64, |h, r| h.rotate_left(5) ^ r.2.digest);
+    println!("digest of the results: {digest:016x}");
     println!(
         "time in scenes {total:.1} s (mean {:.2} ms); slowest: {}",
         1e3 * total / (end - first).max(1) as f64,

@@ -31,7 +31,11 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
     let dist0 = c.norm();
     let now = dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0;
     let rho = rho - SKIN;
-    let searched = !(now || window.is_nan() || window <= 0.0 || dist0 - rho > rel.reach(window));
+    let searched = !(now
+        || window.is_nan()
+        || window <= 0.0
+        || dist0 - rho > rel.reach(window)
+        || never_within(rel, rho, window.min(MAX_WINDOW)));
     let roots = if searched {
         let quartic = Poly::new([
             c.dot(&c) - rho * rho,
@@ -53,6 +57,16 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
             d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
         }))
 }
+
+/// True when the path `rel` provably stays farther than `rho` from the origin over [0, `window`]
+/// by more than any root could be off ([`VERIFY_TOL`]) and any rounding in the bound: no root
+/// could be accepted there, so the search is skipped and nothing else changes.
+fn never_within(rel: &Path, rho: f64, window: f64) -> bool {
+    rel.clearance(window) - rho > CULL_MARGIN + 1e-9 * rel.size(window)
+}
+
+/// Slack of [`never_within`]'s bound beyond the distance test's tolerance, m.
+const CULL_MARGIN: f64 = 1e3 * VERIFY_TOL;
 
 /// Every time in [0, window], in order, at which a point on the path `plan` (relative to a
 /// ring's centre, in plan) at height `dz` above the ring's plane (a quadratic in time, given
@@ -85,7 +99,11 @@ pub fn ring_entries(
     };
     let now = distance(0.0).0 <= rho + TOUCH_TOL && approaching(0.0);
     let rho = rho - SKIN;
-    let searched = !now && window.is_finite() && window > 0.0;
+    // Within rho of the ring, the plan distance from its axis is at most ring + rho.
+    let searched = !now
+        && window.is_finite()
+        && window > 0.0
+        && !never_within(&plan.plan(), ring + rho, window.min(MAX_WINDOW));
     let roots = if searched {
         // d^2 = |plan|^2 (quartic) and h^2 (quartic), as coefficient arrays.
         let (a, b, c) = (plan.a, plan.b, plan.c);

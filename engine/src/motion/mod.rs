@@ -67,6 +67,26 @@ impl Path {
     pub fn reach(&self, tau: f64) -> f64 {
         self.b.norm() * tau + self.a.norm() * tau * tau
     }
+
+    /// A lower bound on the distance of the centre from the origin over [0, `tau`] (for
+    /// culling): the distance of the chord from `at(0)` to `at(tau)`, less the path's largest
+    /// departure from its chord, `|a| tau^2 / 4` (the path minus its chord is `a t (t - tau)`).
+    pub fn clearance(&self, tau: f64) -> f64 {
+        let (p0, p1) = (self.c, self.at(tau));
+        let chord = p1 - p0;
+        let len2 = chord.norm_squared();
+        let s = if len2 > 0.0 {
+            (-p0.dot(&chord) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (p0 + chord * s).norm() - self.a.norm() * tau * tau / 4.0
+    }
+
+    /// Size of the numbers in the path over [0, `tau`], m: the scale of its rounding errors.
+    pub fn size(&self, tau: f64) -> f64 {
+        self.c.norm() + self.reach(tau)
+    }
 }
 
 /// What ends a motion law.

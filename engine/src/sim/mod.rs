@@ -52,7 +52,26 @@ struct Live {
     t_ref: f64,
     /// Absolute time at which the current law ends.
     law_end: f64,
+    /// Half the acceleration of the law since `t_ref` (see [`Sim::law_path`]).
+    half_accel: Vec3,
     generation: u64,
+    /// The law path last computed, with the time and generation it was computed for: every
+    /// pair scheduled after an event reuses it.
+    path_memo: Option<(f64, u64, motion::Path)>,
+}
+
+impl Live {
+    /// Ball in `state` from `t_ref` on.
+    fn new(state: BallState, t_ref: f64, generation: u64, p: &Params) -> Live {
+        Live {
+            state,
+            t_ref,
+            law_end: t_ref + motion::duration(&state, p),
+            half_accel: motion::path(&state, p).a,
+            generation,
+            path_memo: None,
+        }
+    }
 }
 
 struct Sim<'a> {
@@ -82,12 +101,7 @@ pub fn simulate(setup: &Setup, opts: &SimOptions) -> Result<Shot, SimError> {
     };
     for b in &setup.balls {
         let state = motion::settle(b.state, p);
-        sim.balls.push(Live {
-            state,
-            t_ref: 0.0,
-            law_end: motion::duration(&state, p),
-            generation: 0,
-        });
+        sim.balls.push(Live::new(state, 0.0, 0, p));
         sim.tracks.push(Track {
             id: b.id.clone(),
             kind: b.kind,
@@ -125,18 +139,28 @@ impl Sim<'_> {
     /// Ball `i`'s path from now: its current position and velocity, and the acceleration its
     /// law has held since the law began (with the cloth's effects on, a law holds the
     /// acceleration of its segment's start, which the current state would not reproduce).
-    fn law_path(&self, i: usize) -> motion::Path {
+    /// Computed once per ball and instant.
+    fn law_path(&mut self, i: usize) -> motion::Path {
         let b = &self.balls[i];
+        if let Some((t, generation, path)) = b.path_memo
+            && t == self.now
+            && generation == b.generation
+        {
+            return path;
+        }
         let now = self.current(i);
-        motion::Path {
+        let path = motion::Path {
             c: now.pos,
             b: if now.motion.is_moving() {
                 now.vel
             } else {
                 Vec3::zeros()
             },
-            a: motion::path(&b.state, self.params()).a,
-        }
+            a: b.half_accel,
+        };
+        let b = &mut self.balls[i];
+        b.path_memo = Some((self.now, b.generation, path));
+        path
     }
 
     /// End of the window in which ball `i`'s position follows its current polynomial.
@@ -483,10 +507,7 @@ impl Sim<'_> {
                 });
             }
             let b = &mut self.balls[i];
-            b.state = *s;
-            b.t_ref = self.now;
-            b.law_end = self.now + motion::duration(s, &p);
-            b.generation += 1;
+            *b = Live::new(*s, self.now, b.generation + 1, &p);
             self.tracks[i].segments.push(Segment {
                 t: self.now,
                 state: *s,
