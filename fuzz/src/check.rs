@@ -89,7 +89,8 @@ fn bits(s: &Shot) -> Vec<u64> {
     v
 }
 
-/// A stable hash (std's SipHash with fixed keys) of `x`.
+/// A hash of `x` that is the same on every run (std's SipHash with fixed keys; it may change
+/// with the Rust toolchain, so digests are compared on one toolchain).
 fn digest(x: impl Hash) -> u64 {
     let mut h = DefaultHasher::new();
     x.hash(&mut h);
