@@ -6,6 +6,7 @@
 //! only where the bodies approach and the distance is verified there.
 
 pub mod ball_ball;
+pub mod bounds;
 pub mod cushion;
 pub mod pocket;
 pub mod roots;

@@ -14,7 +14,7 @@ pub mod setup;
 pub mod shot;
 
 use crate::ball::{BallState, Motion, Vec3};
-use crate::detect::{self, cushion, cushion::NoseEdge};
+use crate::detect::{self, bounds::PlanBox, cushion, cushion::NoseEdge};
 use crate::impact::{CushionContact, GRAZING_APPROACH, separation};
 use crate::motion;
 use crate::params::Params;
@@ -210,6 +210,9 @@ impl Sim<'_> {
         let path = self.law_path(i);
         let window = law_end.min(self.search_limit()) - self.now;
         let table = &self.setup.table;
+        // Where the ball can be before its law ends: features clearly away from it are not
+        // searched.
+        let reach = PlanBox::of(&path, window);
         let mut found = Vec::new();
         if st.motion == Motion::Airborne {
             // In the air the nose is an edge at its height: met anywhere on the ball, or
@@ -219,6 +222,10 @@ impl Sim<'_> {
                 radius: p.ball_radius,
             };
             for (k, c) in table.cushions.iter().enumerate() {
+                // Both need the centre within R of the nose line in plan.
+                if !reach.near_segment(c.start, c.end, edge.radius) {
+                    continue;
+                }
                 if let Some(t) = cushion::nose_time_in_air(&path, c, edge, window) {
                     found.push((t, Candidate::Nose { cushion: k }));
                 }
@@ -227,25 +234,33 @@ impl Sim<'_> {
                 }
             }
             for (k, j) in table.jaws.iter().enumerate() {
-                if let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window) {
+                if reach.near_point(j.centre, j.radius + edge.radius)
+                    && let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window)
+                {
                     found.push((t, Candidate::Jaw { jaw: k }));
                 }
             }
         } else {
             let contact = p.cushion_contact_distance();
             for (k, c) in table.cushions.iter().enumerate() {
-                if let Some(t) = cushion::nose_time(&path, c, contact, window) {
+                if reach.near_segment(c.start, c.end, contact)
+                    && let Some(t) = cushion::nose_time(&path, c, contact, window)
+                {
                     found.push((t, Candidate::Nose { cushion: k }));
                 }
             }
             for (k, j) in table.jaws.iter().enumerate() {
-                if let Some(t) = cushion::jaw_time(&path, j, contact, window) {
+                if reach.near_point(j.centre, j.radius + contact)
+                    && let Some(t) = cushion::jaw_time(&path, j, contact, window)
+                {
                     found.push((t, Candidate::Jaw { jaw: k }));
                 }
             }
         }
         for (k, pk) in table.pockets.iter().enumerate() {
-            if let Some(t) = detect::pocket::capture_time(&path, pk, window) {
+            if reach.near_point(pk.centre, pk.radius)
+                && let Some(t) = detect::pocket::capture_time(&path, pk, window)
+            {
                 found.push((t, Candidate::Pocket { pocket: k }));
             }
         }
