@@ -72,6 +72,8 @@ fn a_failing_scene_keeps_its_place_and_the_batch_goes_on() {
             err.contains("shots.jsonl:3") && err.contains("balls[0].pos"),
             "{err}"
         );
+        // The scene's source once, not twice.
+        assert_eq!(err.matches("shots.jsonl:3").count(), 1, "{err}");
         assert!(out.exists());
     }
     let got = lines(&dir.join("r.jsonl"));

@@ -129,7 +129,12 @@ pub fn run(args: Args) -> ExitCode {
         return bad_input(format!("--out {}: {e:#}", out.display()));
     }
     for (source, e) in failed.iter().take(10) {
-        eprintln!("error: {source}: {e}");
+        // A scene's own errors name it already; a simulation's do not.
+        if e.starts_with(source.as_str()) {
+            eprintln!("error: {e}");
+        } else {
+            eprintln!("error: {source}: {e}");
+        }
     }
     if failed.len() > 10 {
         eprintln!(
