@@ -238,6 +238,21 @@ impl Impact {
                 zero = (10.0 * zero).min(WIDEST_ZERO);
             }
             self.land_resting::<M, P>(&mut y);
+            // A landing (here, or at a support event) changes a ball's vertical speed by less
+            // than the events' resolution, and with the cushion's tilted normal, the normal
+            // velocity by as little: one still approaching by 1e-13 may so come to part. That
+            // is compression's end (thesis eq. 6.12), though no event crossed it: a phase of
+            // compression that began already parting would never see the event, and push the
+            // bodies apart without end.
+            if compressing && self.primary_motion::<M, P>(&y).1 <= 0.0 {
+                compressing = false;
+                p_c = p;
+                let w_c = y[P::WORK];
+                w_target = (1.0 - self.e * self.e) * w_c;
+                if w_target == w_c {
+                    break;
+                }
+            }
             let mode = self.mode_at::<M, P>(&y, compressing, w_target, zero);
             let ph = self.integrate_phase::<M, P>(&mode, p, y, h, tol, paths.establish, |x, yy| {
                 if recorder.trace.is_some() {
