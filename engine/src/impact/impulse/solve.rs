@@ -56,11 +56,11 @@ impl Paths {
 }
 
 /// Where an impact's samples go, and the scales that make them dimensional.
-struct Recorder<'a, 'b> {
-    trace: Option<&'a mut Vec<Sample>>,
-    contact: &'b Impact,
-    v_scale: f64,
-    mass: f64,
+pub(super) struct Recorder<'a, 'b> {
+    pub trace: Option<&'a mut Vec<Sample>>,
+    pub contact: &'b Impact,
+    pub v_scale: f64,
+    pub mass: f64,
 }
 
 impl Recorder<'_, '_> {
@@ -214,7 +214,7 @@ impl Impact {
     /// The phases of the impact from the scaled state `y` (of pair `P`) to the end of
     /// restitution: the final state, and the outcome with scaled impulses (its velocities are
     /// left for the caller).
-    fn phases<const M: usize, P: Pair<M>>(
+    pub(super) fn phases<const M: usize, P: Pair<M>>(
         &self,
         mut y: [f64; M],
         tol: f64,
