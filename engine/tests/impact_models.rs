@@ -35,10 +35,25 @@ fn rolling_perpendicular_cushion_rebound_is_091_v() {
     // Thesis §6.2.5 / peers.md: e_e = 0.98, mu_w = 0.14 give a rebound of about 0.91 V.
     let p = Params::default();
     for v in [0.5, 1.0, 2.0] {
-        let s = at_cushion(v, 90f64.to_radians(), 1.0, 0.0, &p);
+        let mut s = at_cushion(v, 90f64.to_radians(), 1.0, 0.0, &p);
+        // Square on exactly: cos(90 deg) rounds to 6e-17, not 0.
+        s.vel.x = 0.0;
+        s.spin = Vec3::z().cross(&s.vel) / p.ball_radius;
         let out = cush::resolve(&s, Vec3::y(), &p).unwrap();
         assert!((out.vel.y / v - 0.911).abs() < 0.002, "{}", out.vel.y / v);
-        assert!(out.vel.x.abs() < 1e-12 && out.vel.z == 0.0);
+        // Symmetric in, symmetric out, to the bit.
+        assert!(out.vel.x == 0.0 && out.vel.z == 0.0, "{:?}", out.vel);
+        // A sideways speed a billionth of V comes back as a fraction of itself, the same way
+        // (the impact's response is linear there), not amplified.
+        let mut off = s;
+        off.vel.x = 1e-9 * v;
+        off.spin = Vec3::z().cross(&off.vel) / p.ball_radius;
+        let out = cush::resolve(&off, Vec3::y(), &p).unwrap();
+        let ratio = out.vel.x / off.vel.x;
+        assert!(
+            ratio > 0.0 && ratio < 1.0,
+            "sideways {ratio} of the incoming"
+        );
     }
 }
 

@@ -113,9 +113,25 @@ impl Mode {
 #[inline(always)]
 pub(super) fn slip_direction(s: Vec3, chosen: Vec3, zero: f64) -> Vec3 {
     let n = s.norm();
+    if n <= zero {
+        return chosen;
+    }
     // One division and three products rather than three divisions: the slopes are a chain of
     // dependent evaluations, and a division is slow.
-    if n > zero { s * (1.0 / n) } else { chosen }
+    let d = s * (1.0 / n);
+    // A slip that has come down through zero within a step (turned by more than 135 degrees
+    // from the phase's direction) keeps the law it had along that direction: the phase ends at
+    // that zero (its event), and a law continued smoothly past it lets the step that
+    // overshoots be accepted and the zero located on the step's interpolant, rather than
+    // refused until the steps creep up on it. Mirrored, not reversed: across the direction
+    // the slip's part keeps its side of the zero, as it does passing by it, so that a slip
+    // dying along its direction steers friction across it exactly as the exact law does.
+    let along = d.dot(&chosen);
+    if along < -std::f64::consts::FRAC_1_SQRT_2 {
+        d - (2.0 * along) * chosen
+    } else {
+        d
+    }
 }
 
 /// Friction of a contact under `law` whose slip is `s`, its capacity (mu N) being `cap`;
