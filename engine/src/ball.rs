@@ -11,6 +11,16 @@ pub type Vec3 = Vector3<f64>;
 pub const INERTIA_FACTOR: f64 = 0.4;
 /// M R^2 / I for a solid ball, the inverse of [`INERTIA_FACTOR`]: 5/2.
 pub const INV_INERTIA_FACTOR: f64 = 2.5;
+/// A sliding ball's slip (contact-point velocity) changes at this many times the friction's
+/// deceleration mu g: 1 from the centre's, M R^2 / I from the spin's (thesis §2.4.2): 7/2.
+pub const SLIP_RATE_FACTOR: f64 = 1.0 + INV_INERTIA_FACTOR;
+/// A rolling ball's share of the acceleration a force at its centre would give it free,
+/// (M R^2 / I) / (1 + M R^2 / I) = 5/7 (the rest spins it; thesis §2.4.2); also the share of a
+/// sliding ball's velocity kept when it comes to roll (equal to `5.0 / 7.0` to the bit).
+pub const ROLLING_SHARE: f64 = INV_INERTIA_FACTOR / SLIP_RATE_FACTOR;
+/// The share of R omega x z (the spin's) in the velocity a sliding ball rolls on with,
+/// 1 / (1 + M R^2 / I) = 2/7 (equal to `2.0 / 7.0` to the bit).
+pub const ROLLING_SPIN_SHARE: f64 = 1.0 / SLIP_RATE_FACTOR;
 
 /// The phase of a ball's motion; each phase has its own closed-form law (see [`crate::motion`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -195,6 +205,14 @@ impl BallState {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_solid_balls_factors_are_the_fractions_to_the_bit() {
+        assert_eq!(INV_INERTIA_FACTOR, 1.0 / INERTIA_FACTOR);
+        assert_eq!(SLIP_RATE_FACTOR, 3.5);
+        assert_eq!(ROLLING_SHARE, 5.0 / 7.0);
+        assert_eq!(ROLLING_SPIN_SHARE, 2.0 / 7.0);
+    }
 
     #[test]
     fn kinds_from_ids() {

@@ -19,7 +19,7 @@
 //! struck (Shepard 1997, Cross 2008): tan(squirt) = 2.5 s c / (1 + 2.5 c^2 + M / m_e), with
 //! s = b/R the contact's side offset and c = sqrt(1 - s^2).
 
-use crate::ball::{BallState, Vec3};
+use crate::ball::{BallState, INV_INERTIA_FACTOR, Vec3};
 use crate::motion;
 use crate::params::Params;
 use crate::sim::setup::{MAX_BALL_SPEED, MAX_SPIN_SPEED};
@@ -87,7 +87,8 @@ fn err(key: &'static str, reason: String) -> CueError {
 pub fn squirt_ratio(b: f64, p: &Params) -> f64 {
     let s = (b / p.ball_radius).clamp(-1.0, 1.0);
     let c2 = 1.0 - s * s;
-    2.5 * s * c2.sqrt() / (1.0 + 2.5 * c2 + p.ball_mass / p.cue_endmass)
+    INV_INERTIA_FACTOR * s * c2.sqrt()
+        / (1.0 + INV_INERTIA_FACTOR * c2 + p.ball_mass / p.cue_endmass)
 }
 
 /// Strikes `ball` with `cue`; the impulse adds to whatever motion the ball had.

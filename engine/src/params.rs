@@ -7,6 +7,7 @@
 //! call below; the struct, its defaults, the table of [`PARAMS`] (name, unit, range, source),
 //! access by name and the range checks are all derived from that one declaration.
 
+use crate::ball::INV_INERTIA_FACTOR;
 use serde::{Deserialize, Serialize};
 
 /// The cushion nose's height over the ball radius, h / R = 7/5 (thesis §6.2: the nose touches
@@ -267,7 +268,7 @@ pub fn squirt_endmass(mass: f64, radius: f64, b: f64, angle: f64) -> f64 {
     let s = b / radius;
     let c2 = 1.0 - s * s;
     // tan(squirt) = 2.5 s cos(a) / (1 + 2.5 cos^2(a) + M/m_e)  =>  solve for m_e.
-    let denom = 2.5 * s * c2.sqrt() / angle.tan() - 1.0 - 2.5 * c2;
+    let denom = INV_INERTIA_FACTOR * s * c2.sqrt() / angle.tan() - 1.0 - INV_INERTIA_FACTOR * c2;
     mass / denom
 }
 

@@ -8,7 +8,7 @@ use crate::scene_text::{BallText, CueText, SceneText, num};
 use rand::RngExt;
 use rand::rngs::ChaCha8Rng;
 use snooker_engine::cue::{self, Cue, MAX_CUE_SPEED, MAX_ELEVATION};
-use snooker_engine::params::{Bound, PARAMS};
+use snooker_engine::params::{Bound, NOSE_HEIGHT_PER_RADIUS, PARAMS};
 use snooker_engine::{BallState, Params, SnookerDims, Table, Vec3};
 use std::f64::consts::{PI, TAU};
 
@@ -394,7 +394,7 @@ impl Gen<'_> {
         let radius_given = set.iter().any(|(n, _)| *n == "ball_radius");
         let height_given = set.iter().any(|(n, _)| *n == "cushion_height");
         if radius_given && !height_given {
-            p.cushion_height = 1.4 * p.ball_radius;
+            p.cushion_height = NOSE_HEIGHT_PER_RADIUS * p.ball_radius;
         }
         if height_given || radius_given {
             let h = p.ball_radius * self.u(1.05, 1.95);

@@ -24,6 +24,7 @@ use crate::digest::{Final, Impact, Parties, Roll, ShotDigest, Velocities};
 use crate::rapier_world::{ImpactFriction, Kinematics, TablePart, World, WorldConfig, rest_depth};
 use crate::shapes::{CushionContact, Feature, TableShapes};
 use crate::table_laws::{rolling_resistance, sidespin_resistance};
+use snooker_engine::ball::SLIP_RATE_FACTOR;
 use snooker_engine::{BallState, Motion, Setup, Table, Vec3, motion};
 
 /// The result of a rapier run (a whole shot or one stretch).
@@ -522,7 +523,7 @@ impl<'a> Rapier<'a> {
             }
             // Sliding friction shrinks the slip by 3.5 mu_s g per second (physics.md): a slip
             // below one step's worth ends within the step.
-            let small = u <= 3.5 * p.mu_slide * p.g * dt;
+            let small = u <= SLIP_RATE_FACTOR * p.mu_slide * p.g * dt;
             let sticks = cloth[i]
                 .is_some_and(|c| c.tangent_impulse < (1.0 - 1e-6) * p.mu_slide * c.normal_impulse);
             let rolling = sticks && small && !at_rest(k, self.setup, dt);

@@ -59,6 +59,7 @@
 
 use crate::digest::{Impact, Parties, ShotDigest};
 use snooker_engine::Params;
+use snooker_engine::ball::INV_INERTIA_FACTOR;
 
 /// What sets the tolerances of one comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,7 +151,7 @@ fn model_difference(b: &Budget, parties: &Parties, approach: f64) -> (f64, f64) 
         }
         Parties::Pocket(..) | Parties::OffTable(..) => 0.0,
     };
-    (dv, 2.5 * dv / p.ball_radius)
+    (dv, INV_INERTIA_FACTOR * dv / p.ball_radius)
 }
 
 /// Gain from an incoming velocity difference (the largest over the balls) to the difference
@@ -241,7 +242,8 @@ pub fn change_bound(
     let a_in = approach_accel(p, &ours.parties);
     let coupled = incoming_gain(b, &ours.parties) * incoming + curvature(b, ours, lateral);
     let dv = mv + tilt_v + coupled + a_in * span;
-    let dw = mw + 2.5 / p.ball_radius * (coupled + a_s * span) + p.sidespin_decel * span;
+    let dw =
+        mw + INV_INERTIA_FACTOR / p.ball_radius * (coupled + a_s * span) + p.sidespin_decel * span;
     (dv, dw)
 }
 
@@ -337,7 +339,8 @@ pub fn allowances_from(ours: &ShotDigest, b: &Budget, t0: f64) -> Allowances {
                 .iter()
                 .filter_map(|&ball| sliding_since[ball].map(|t0| t - t0))
                 .fold(0.0, f64::max);
-            let tol_w_before = dv_here / r + 2.5 * a_s / r * (tol_t + b.dt + eps * slid);
+            let tol_w_before =
+                dv_here / r + INV_INERTIA_FACTOR * a_s / r * (tol_t + b.dt + eps * slid);
             let tol_w = tol_w_before + mw;
             out.impacts[i] = ImpactTol {
                 t: tol_t,

@@ -7,7 +7,7 @@ pub mod rolling;
 pub mod sliding;
 pub mod spinning;
 
-use crate::ball::{BallState, Motion, Vec3};
+use crate::ball::{BallState, Motion, ROLLING_SHARE, ROLLING_SPIN_SHARE, Vec3};
 use crate::params::Params;
 use serde::{Deserialize, Serialize};
 
@@ -196,7 +196,7 @@ pub fn finish(start: &BallState, end: &BallState, p: &Params) -> Option<(Transit
                 // have left a sliver across it: end it as the cloth would, keeping the angular
                 // momentum about the contact point (v = 5/7 v + 2/7 R w x e_z).
                 let r = p.ball_radius;
-                let v = 5.0 / 7.0 * s.vel + 2.0 / 7.0 * r * s.spin.cross(&Vec3::z());
+                let v = ROLLING_SHARE * s.vel + ROLLING_SPIN_SHARE * r * s.spin.cross(&Vec3::z());
                 s.vel = Vec3::new(v.x, v.y, 0.0);
                 let w = Vec3::z().cross(&s.vel) / r;
                 s.spin.x = w.x;

@@ -7,7 +7,7 @@
 
 use super::cloth;
 use super::spinning::sidespin_at;
-use crate::ball::{BallState, Vec3};
+use crate::ball::{BallState, ROLLING_SHARE, Vec3};
 use crate::params::Params;
 
 fn direction(s: &BallState) -> Vec3 {
@@ -18,7 +18,7 @@ fn direction(s: &BallState) -> Vec3 {
 
 /// Acceleration with the ball moving along the unit vector `d`.
 fn acceleration_along(d: Vec3, p: &Params) -> Vec3 {
-    -p.mu_roll * p.g * d + 5.0 / 7.0 * cloth::body_acceleration(p, d)
+    -p.mu_roll * p.g * d + ROLLING_SHARE * cloth::body_acceleration(p, d)
 }
 
 /// The law's direction of travel: the starting one, or with the effects of [`cloth`] on the

@@ -8,7 +8,7 @@
 
 use super::cloth;
 use super::spinning::sidespin_at;
-use crate::ball::{BallState, Vec3};
+use crate::ball::{BallState, INV_INERTIA_FACTOR, SLIP_RATE_FACTOR, Vec3};
 use crate::params::Params;
 
 /// Unit vector along the slip, or zero when there is none.
@@ -38,7 +38,7 @@ fn law(s: &BallState, p: &Params) -> Law {
         let mu = cloth::mu_slide(p, u.norm());
         let extra = cloth::body_acceleration(p, vhat);
         // The slip along u^ shrinks at 7/2 mu g less the extra acceleration's share.
-        let rate = 3.5 * mu * p.g - extra.dot(&uhat);
+        let rate = SLIP_RATE_FACTOR * mu * p.g - extra.dot(&uhat);
         let natural_end = if rate > 0.0 {
             u0.dot(&uhat) / rate
         } else {
@@ -57,7 +57,7 @@ fn law(s: &BallState, p: &Params) -> Law {
     }
     let half = 0.5 * start.natural_end.min(cloth::SEGMENT);
     let dv = half * (start.extra - start.mu * p.g * start.uhat);
-    let du = dv - half * 2.5 * start.mu * p.g * start.uhat;
+    let du = dv - half * INV_INERTIA_FACTOR * start.mu * p.g * start.uhat;
     let mid = at(u0 + du, v0 + dv);
     // Keep the start's direction if the slip would vanish before mid-segment.
     if mid.uhat == Vec3::zeros() {
@@ -97,7 +97,7 @@ pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
     let mut out = *s;
     out.pos = s.pos + s.vel * dt + 0.5 * dt * dt * (l.extra - f * uhat);
     out.vel = s.vel + dt * (l.extra - f * uhat);
-    let dw = (2.5 * f / p.ball_radius * dt) * Vec3::z().cross(&uhat);
+    let dw = (INV_INERTIA_FACTOR * f / p.ball_radius * dt) * Vec3::z().cross(&uhat);
     out.spin.x = s.spin.x + dw.x;
     out.spin.y = s.spin.y + dw.y;
     out.spin.z = sidespin_at(s.spin.z, dt, p.sidespin_decel);
