@@ -2,7 +2,7 @@
 # The 10^6-scene fuzz run (issue 11) in 20 parts of 50,000 (the same scenes as one run: each
 # scene has its own generator), resumable: a finished part is skipped. Logs, failures and a
 # `.done` marker per part go to DIR. Then: scripts/fuzz_report.py DIR COMMIT.
-# Usage: scripts/fuzz_million.sh DIR [SEED]   (about 6 minutes per part on 2 cores)
+# Usage: scripts/fuzz_million.sh DIR [SEED]   (about 1 minute per part on 2 cores, at 037825d)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=$(realpath -m "${1:?usage: fuzz_million.sh DIR [SEED]}")
