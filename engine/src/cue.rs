@@ -19,7 +19,7 @@
 //! struck (Shepard 1997, Cross 2008): tan(squirt) = 2.5 s c / (1 + 2.5 c^2 + M / m_e), with
 //! s = b/R the contact's side offset and c = sqrt(1 - s^2).
 
-use crate::ball::{BallState, INV_INERTIA_FACTOR, Vec3};
+use crate::ball::{Ball, BallState, INV_INERTIA_FACTOR, Vec3};
 use crate::motion;
 use crate::params::Params;
 use crate::sim::setup::{MAX_BALL_SPEED, MAX_SPIN_SPEED};
@@ -89,6 +89,16 @@ pub fn squirt_ratio(b: f64, p: &Params) -> f64 {
     let c2 = 1.0 - s * s;
     INV_INERTIA_FACTOR * s * c2.sqrt()
         / (1.0 + INV_INERTIA_FACTOR * c2 + p.ball_mass / p.cue_endmass)
+}
+
+impl Ball {
+    /// Strikes this ball with `cue` ([`strike`]): its state becomes the struck one; returns
+    /// what the strike did. On an error the ball is left as it was.
+    pub fn strike(&mut self, cue: &Cue, p: &Params) -> Result<Strike, CueError> {
+        let s = strike(&self.state, cue, p)?;
+        self.state = s.state;
+        Ok(s)
+    }
 }
 
 /// Strikes `ball` with `cue`; the impulse adds to whatever motion the ball had.

@@ -4,12 +4,12 @@
 //! the air; parameters anywhere in their documented ranges; both impact models; Newton's
 //! cradles; the break-off; and scenes with bad input.
 
-use crate::scene_text::{BallText, CueText, SceneText, num};
 use rand::RngExt;
 use rand::rngs::ChaCha8Rng;
 use snooker_engine::cue::{self, Cue, MAX_CUE_SPEED, MAX_ELEVATION};
 use snooker_engine::params::{Bound, NOSE_HEIGHT_PER_RADIUS, PARAMS};
 use snooker_engine::{BallState, Params, SnookerDims, Table, Vec3};
+use snooker_scene::write::{BallText, CueText, SceneText, num};
 use std::f64::consts::{PI, TAU};
 
 /// What kind of scene.

@@ -8,7 +8,6 @@
 
 mod check;
 mod generate;
-mod scene_text;
 
 use clap::Parser;
 use generate::{Kind, generate};

@@ -36,6 +36,7 @@ pub use robust::Robustness;
 pub use trial::{Fault, Route, Trial};
 
 use serde::Serialize;
+use snooker_engine::Cue;
 use snooker_scene::Scene;
 use std::time::Instant;
 
@@ -52,6 +53,29 @@ pub struct StrikeSpec {
     pub offset: [f64; 2],
     /// Elevation, rad.
     pub elevation: f64,
+}
+
+impl StrikeSpec {
+    /// The strike `cue` on ball `ball`.
+    pub fn new(ball: &str, cue: &Cue) -> StrikeSpec {
+        StrikeSpec {
+            ball: ball.into(),
+            speed: cue.speed,
+            aim: cue.aim,
+            offset: cue.offset,
+            elevation: cue.elevation,
+        }
+    }
+
+    /// The engine's cue strike.
+    pub fn cue(&self) -> Cue {
+        Cue {
+            speed: self.speed,
+            aim: self.aim,
+            offset: self.offset,
+            elevation: self.elevation,
+        }
+    }
 }
 
 /// The cue ball's route, for reading.
@@ -133,13 +157,7 @@ pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanErr
         .map(|(k, f)| {
             let t = &f.trial;
             PlannedShot {
-                strike: StrikeSpec {
-                    ball: cue_id.clone(),
-                    speed: t.cue.speed,
-                    aim: t.cue.aim,
-                    offset: t.cue.offset,
-                    elevation: t.cue.elevation,
-                },
+                strike: StrikeSpec::new(&cue_id, &t.cue),
                 potted: t.pots(),
                 cue_final: [t.cue_final.x, t.cue_final.y],
                 distance: f.distance,

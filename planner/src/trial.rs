@@ -3,7 +3,7 @@
 //! off the object ball left for the pocket.
 
 use crate::problem::Problem;
-use snooker_engine::cue::{self, Cue};
+use snooker_engine::cue::Cue;
 use snooker_engine::{EventKind, Motion, Vec3, simulate};
 
 /// Why a shot is not a plan (a foul or a miss, in the snooker sense).
@@ -66,9 +66,7 @@ impl Problem {
     /// possible (a miscue) or the shot does not simulate.
     pub fn trial(&self, cue: &Cue) -> Option<Trial> {
         let mut setup = self.setup.clone();
-        let p = setup.params;
-        let before = setup.balls[self.cue].state;
-        setup.balls[self.cue].state = cue::strike(&before, cue, &p).ok()?.state;
+        setup.balls[self.cue].strike(cue, &self.setup.params).ok()?;
         self.count_shot();
         let shot = simulate(&setup, &self.options).ok()?;
         let (c, o) = (self.cue, self.object);
@@ -111,7 +109,7 @@ impl Problem {
             .filter_map(|e| e.feature.clone())
             .take(3)
             .collect();
-        let third = p.ball_radius / 3.0;
+        let third = setup.params.ball_radius / 3.0;
         let spin = if cue.offset[1] < -third {
             -1
         } else if cue.offset[1] > third {

@@ -4,7 +4,7 @@
 
 use crate::file::SceneFile;
 use crate::{Scene, SceneError, StruckBall};
-use snooker_engine::cue::{self, Cue};
+use snooker_engine::cue::Cue;
 use snooker_engine::table::layout;
 use snooker_engine::{
     Ball, BallKind, BallState, Motion, Params, Setup, SimOptions, SnookerDims, Table, TableKind,
@@ -206,16 +206,17 @@ pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
             offset: c.offset.0,
             elevation: c.elevation,
         };
-        let s = cue::strike(&balls[i].state, &cue, &params)
+        let before = balls[i].state;
+        let s = balls[i]
+            .strike(&cue, &params)
             .map_err(|e| fail(&format!("cue.{}", e.key), e.reason))?;
         strike = Some(StruckBall {
             id: c.ball.clone(),
             index: i,
             cue,
             strike: s,
-            before: balls[i].state,
+            before,
         });
-        balls[i].state = s.state;
     }
     let options = options(&spec, file)?;
 

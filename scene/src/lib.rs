@@ -20,6 +20,7 @@ pub mod model;
 pub mod params;
 pub mod result;
 pub mod toml_input;
+pub mod write;
 
 pub use error::SceneError;
 pub use json_input::from_json;

@@ -310,18 +310,10 @@ fn recording(
         radius: 0.002,
     });
     for (k, alt) in plan.alternatives.iter().enumerate() {
-        let st = &alt.strike;
-        let cue = snooker_engine::cue::Cue {
-            speed: st.speed,
-            aim: st.aim,
-            offset: st.offset,
-            elevation: st.elevation,
-        };
         let mut setup = problem.setup.clone();
-        let before = setup.balls[problem.cue].state;
-        setup.balls[problem.cue].state = snooker_engine::cue::strike(&before, &cue, &setup.params)
-            .map_err(|e| e.to_string())?
-            .state;
+        setup.balls[problem.cue]
+            .strike(&alt.strike.cue(), &problem.setup.params)
+            .map_err(|e| e.to_string())?;
         let alt_shot =
             snooker_engine::simulate(&setup, &problem.options).map_err(|e| e.to_string())?;
         let track = &alt_shot.tracks[problem.cue];

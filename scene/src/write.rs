@@ -1,0 +1,191 @@
+//! Scene files written from values (the format of `shared/formats.md`), every number so
+//! that it reads back to the bit: a scene built from parts ([`SceneText`]: the fuzz harness's
+//! scenes and failing cases, the planner's test positions), and a scene file with its `[cue]`
+//! replaced ([`with_cue`]: `snooker plan --scene-out`).
+
+use snooker_engine::Cue;
+use std::fmt::Write as _;
+
+/// A ball of a generated scene.
+#[derive(Clone, Debug)]
+pub struct BallText {
+    /// Its id.
+    pub id: String,
+    /// Centre [x, y], m.
+    pub pos: [f64; 2],
+    /// Velocity, m/s.
+    pub vel: Option<[f64; 3]>,
+    /// Angular velocity, rad/s.
+    pub spin: Option<[f64; 3]>,
+}
+
+/// A cue strike of a generated scene.
+#[derive(Clone, Copy, Debug)]
+pub struct CueText {
+    /// Cue speed, m/s.
+    pub speed: f64,
+    /// Heading, rad.
+    pub aim: f64,
+    /// [side, height], m.
+    pub offset: [f64; 2],
+    /// Elevation, rad.
+    pub elevation: f64,
+}
+
+/// A generated scene.
+#[derive(Clone, Debug, Default)]
+pub struct SceneText {
+    /// The open table instead of the snooker table.
+    pub open_table: bool,
+    /// A named layout.
+    pub layout: Option<String>,
+    /// Parameters set, by name.
+    pub params: Vec<(&'static str, f64)>,
+    /// Impact models (ball-ball, cushion).
+    pub models: Option<(&'static str, &'static str)>,
+    /// Balls listed.
+    pub balls: Vec<BallText>,
+    /// The strike, on the first ball (or "cue").
+    pub cue: Option<(String, CueText)>,
+}
+
+/// A number as TOML reads it back exactly (Rust's shortest round-trip form).
+pub fn num(v: f64) -> String {
+    if v.is_nan() {
+        "nan".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "inf".into() } else { "-inf".into() }
+    } else {
+        format!("{v:?}")
+    }
+}
+
+fn array(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|&x| num(x)).collect();
+    format!("[{}]", parts.join(", "))
+}
+
+impl SceneText {
+    /// The scene file.
+    pub fn to_toml(&self) -> String {
+        let mut s = String::new();
+        if let Some(l) = &self.layout {
+            let _ = writeln!(s, "layout = \"{l}\"");
+        }
+        if self.open_table {
+            let _ = writeln!(s, "[table]\nkind = \"open\"");
+        }
+        if !self.params.is_empty() {
+            let _ = writeln!(s, "[params]");
+            for (k, v) in &self.params {
+                let _ = writeln!(s, "{k} = {}", num(*v));
+            }
+        }
+        if let Some((bb, c)) = self.models {
+            let _ = writeln!(s, "[models]\nball_ball = \"{bb}\"\ncushion = \"{c}\"");
+        }
+        if let Some((ball, c)) = &self.cue {
+            let _ = writeln!(
+                s,
+                "[cue]\nball = \"{ball}\"\nspeed = {}\naim = {}\noffset = {}\nelevation = {}",
+                num(c.speed),
+                num(c.aim),
+                array(&c.offset),
+                num(c.elevation)
+            );
+        }
+        for b in &self.balls {
+            let _ = writeln!(s, "[[balls]]\nid = \"{}\"\npos = {}", b.id, array(&b.pos));
+            if let Some(v) = b.vel {
+                let _ = writeln!(s, "vel = {}", array(&v));
+            }
+            if let Some(w) = b.spin {
+                let _ = writeln!(s, "spin = {}", array(&w));
+            }
+        }
+        s
+    }
+}
+
+/// Why a scene file could not be written again with a new strike.
+#[derive(Debug, thiserror::Error)]
+pub enum WriteError {
+    /// The text is not a TOML table.
+    #[error("{0}")]
+    NotToml(#[from] toml::de::Error),
+    /// The table could not be written as TOML.
+    #[error("{0}")]
+    Serialize(#[from] toml::ser::Error),
+}
+
+/// `scene_text` with its `[cue]` replaced by `cue` on ball `ball` (comments and layout are not
+/// kept: the file is written again from its values).
+pub fn with_cue(scene_text: &str, ball: &str, cue: &Cue) -> Result<String, WriteError> {
+    let mut doc: toml::Table = scene_text.parse()?;
+    let mut table = toml::Table::new();
+    table.insert("ball".into(), toml::Value::String(ball.into()));
+    table.insert("speed".into(), toml::Value::Float(cue.speed));
+    table.insert("aim".into(), toml::Value::Float(cue.aim));
+    let offset = cue.offset.iter().map(|&v| toml::Value::Float(v)).collect();
+    table.insert("offset".into(), toml::Value::Array(offset));
+    table.insert("elevation".into(), toml::Value::Float(cue.elevation));
+    doc.insert("cue".into(), toml::Value::Table(table));
+    Ok(toml::to_string(&doc)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use snooker_engine::impact::sweep::Rng;
+
+    #[test]
+    fn a_strike_written_again_reads_back_to_the_bit() {
+        // Random bit patterns: the generator's state after each draw.
+        let mut rng = Rng(0x1234_5678_9abc_def1);
+        for _ in 0..2000 {
+            rng.uniform(0.0, 1.0);
+            let v = f64::from_bits(rng.0);
+            if !v.is_finite() {
+                continue;
+            }
+            let cue = Cue {
+                speed: v,
+                aim: -v,
+                offset: [v / 3.0, v * 1e-300],
+                elevation: v.abs(),
+            };
+            let text = with_cue("balls = []", "cue", &cue).unwrap();
+            let back: toml::Table = text.parse().unwrap();
+            let table = back["cue"].as_table().unwrap();
+            let speed = table["speed"].as_float().unwrap();
+            assert_eq!(speed.to_bits(), v.to_bits(), "{text}");
+            let off = table["offset"].as_array().unwrap();
+            assert_eq!(off[1].as_float().unwrap().to_bits(), (v * 1e-300).to_bits());
+        }
+    }
+
+    #[test]
+    fn a_scene_from_parts_reads_back_to_the_bit() {
+        let mut rng = Rng(0x0bad_5eed_0000_0001);
+        for _ in 0..500 {
+            let x = rng.uniform(0.1, 3.5);
+            let y = rng.uniform(0.1, 1.7);
+            let text = SceneText {
+                balls: vec![BallText {
+                    id: "cue".into(),
+                    pos: [x, y],
+                    vel: None,
+                    spin: None,
+                }],
+                ..SceneText::default()
+            }
+            .to_toml();
+            let scene = crate::parse(&text, "parts.toml").unwrap();
+            let pos = scene.setup.balls[0].state.pos;
+            assert_eq!(
+                (pos.x.to_bits(), pos.y.to_bits()),
+                (x.to_bits(), y.to_bits())
+            );
+        }
+    }
+}
