@@ -569,17 +569,19 @@ fn convergence(out: &mut String, report: &Report) {
     for f in FIGURES {
         let _ = write!(out, " {} |", f.name());
     }
-    out.push_str(" passed | time (s) |\n|---|");
+    // No wall-clock column: the committed report must regenerate without a diff (issue 12);
+    // the JSON report (`--json`) keeps each step's time.
+    out.push_str(" passed |\n|---|");
     for _ in FIGURES {
         out.push_str("---|");
     }
-    out.push_str("---|---|\n");
+    out.push_str("---|\n");
     for row in &report.convergence {
         let _ = write!(out, "| {} |", row.dt);
         for d in &row.max_diff {
             let _ = write!(out, " {} |", sci(*d));
         }
-        let _ = writeln!(out, " {}/{} | {:.1} |", row.passed, row.runs, row.seconds);
+        let _ = writeln!(out, " {}/{} |", row.passed, row.runs);
     }
 }
 
