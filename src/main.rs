@@ -24,7 +24,7 @@ enum Command {
     Impact(impact::Args),
     /// Cross-check the engine against rapier on the validation scenes (or the given ones) and
     /// print the report; exits with 1 when a verdict fails.
-    Validate(validate::Request),
+    Validate(validate::Args),
     /// Make measured-like data with effects hidden in it: the scene simulated under its model
     /// plus the hidden effects, filmed with camera noise and dropped frames.
     Synth(synth::Args),

@@ -1,14 +1,31 @@
 //! Writing output files: checked before any work is done, written whole or not at all.
 
+/// Why a path cannot become an output file.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// The path is a directory.
+    #[error("is a directory, not a file")]
+    Directory,
+    /// The path ends without a file name (`..`, `/`).
+    #[error("has no file name")]
+    NoFileName,
+    /// An output directory's path is a file.
+    #[error("is a file, not a directory")]
+    FileNotDirectory,
+    /// A file lies where a directory on the way should be.
+    #[error("{} is not a directory", .0.display())]
+    NotADirectory(std::path::PathBuf),
+}
+
 /// Checks, before any work, that `path` can become an output file: it is not a directory and
 /// nothing but directories lies on its way (missing directories are created when it is
 /// written).
-pub fn check_output(path: &std::path::Path) -> Result<(), String> {
+pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     if path.is_dir() {
-        return Err("is a directory, not a file".into());
+        return Err(OutputError::Directory);
     }
     if path.file_name().is_none() {
-        return Err("has no file name".into());
+        return Err(OutputError::NoFileName);
     }
     let first_existing = path
         .ancestors()
@@ -16,9 +33,18 @@ pub fn check_output(path: &std::path::Path) -> Result<(), String> {
         .filter(|a| !a.as_os_str().is_empty())
         .find(|a| a.exists());
     match first_existing {
-        Some(a) if !a.is_dir() => Err(format!("{} is not a directory", a.display())),
+        Some(a) if !a.is_dir() => Err(OutputError::NotADirectory(a.to_path_buf())),
         _ => Ok(()),
     }
+}
+
+/// Checks, before any work, that `dir` can become an output directory holding `file`: it is
+/// not a file, and `file` can be written in it ([`check_output`]).
+pub fn check_output_dir(dir: &std::path::Path, file: &str) -> Result<(), OutputError> {
+    if dir.exists() && !dir.is_dir() {
+        return Err(OutputError::FileNotDirectory);
+    }
+    check_output(&dir.join(file))
 }
 
 /// Writes `text` to `path` atomically: a temporary file beside it, then a rename, so nothing

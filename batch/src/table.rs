@@ -21,8 +21,14 @@ use std::sync::Arc;
 
 /// A table that could not be encoded.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot write the Parquet table: {0}")]
-pub struct TableError(String);
+pub enum TableError {
+    /// The columns did not form a record batch.
+    #[error("cannot build the table's columns: {0}")]
+    Arrow(#[from] arrow_schema::ArrowError),
+    /// The Parquet writer failed.
+    #[error("cannot write the Parquet table: {0}")]
+    Parquet(#[from] parquet::errors::ParquetError),
+}
 
 /// A list column: per row, the values `f` gives, appended by `push`.
 fn list<'a, B: ArrayBuilder + Default, T>(
@@ -97,17 +103,15 @@ pub fn record_batch(rows: &[Summary]) -> Result<RecordBatch, TableError> {
             strings(rows, |r| r.balls.iter().map(|b| b.2).collect()),
         ),
     ];
-    RecordBatch::try_from_iter(columns).map_err(|e| TableError(e.to_string()))
+    Ok(RecordBatch::try_from_iter(columns)?)
 }
 
 /// The rows as the bytes of a Parquet file.
 pub fn parquet_bytes(rows: &[Summary]) -> Result<Vec<u8>, TableError> {
     let batch = record_batch(rows)?;
-    let fail = |e: parquet::errors::ParquetError| TableError(e.to_string());
     let mut out = Vec::new();
-    let mut writer =
-        parquet::arrow::ArrowWriter::try_new(&mut out, batch.schema(), None).map_err(fail)?;
-    writer.write(&batch).map_err(fail)?;
-    writer.close().map_err(fail)?;
+    let mut writer = parquet::arrow::ArrowWriter::try_new(&mut out, batch.schema(), None)?;
+    writer.write(&batch)?;
+    writer.close()?;
     Ok(out)
 }

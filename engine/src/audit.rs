@@ -117,8 +117,7 @@ pub fn motion_allowance(p: &Params, balls: usize, dt: f64) -> f64 {
     if p.nap_drift == 0.0 {
         return 0.0;
     }
-    let a =
-        p.nap_drift.abs() + p.g * p.slope_x.hypot(p.slope_y) + p.mu_slide.max(p.mu_slide_low) * p.g;
+    let a = p.nap_drift.abs() + p.g * p.tilt() + p.mu_slide.max(p.mu_slide_low) * p.g;
     balls as f64 * 0.5 * p.ball_mass * p.nap_drift.abs() * a * SEGMENT * (dt + SEGMENT)
 }
 

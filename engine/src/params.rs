@@ -272,6 +272,11 @@ pub fn squirt_endmass(mass: f64, radius: f64, b: f64, angle: f64) -> f64 {
     mass / denom
 }
 
+/// The steepest tilt of the bed, rad, per unit of `mu_roll`, on which a ball at rest stays at
+/// rest: a rolling ball is pulled down the slope by 5/7 g tilt ([`crate::ball::ROLLING_SHARE`];
+/// [`crate::motion::cloth`]), which rolling resistance, mu_roll g, must hold: tilt < 7/5 mu_roll.
+pub const MAX_TILT_PER_MU_ROLL: f64 = 7.0 / 5.0;
+
 /// A parameter value that cannot be simulated.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ParamError {
@@ -293,6 +298,24 @@ impl Params {
     /// Moment of inertia of a solid ball about a diameter, 2 M R^2 / 5.
     pub fn inertia(&self) -> f64 {
         crate::ball::INERTIA_FACTOR * self.ball_mass * self.ball_radius * self.ball_radius
+    }
+
+    /// The bed's tilt, rad: the size of (`slope_x`, `slope_y`).
+    pub fn tilt(&self) -> f64 {
+        self.slope_x.hypot(self.slope_y)
+    }
+
+    /// The steepest tilt, rad, on which a ball at rest stays at rest,
+    /// [`MAX_TILT_PER_MU_ROLL`] `mu_roll`.
+    pub fn max_tilt(&self) -> f64 {
+        MAX_TILT_PER_MU_ROLL * self.mu_roll
+    }
+
+    /// True when the bed is tilted too steeply for its rolling resistance to hold a ball at
+    /// rest ([`MAX_TILT_PER_MU_ROLL`]); [`Params::validate`] rejects such a bed.
+    pub fn tilt_rolls_resting_balls(&self) -> bool {
+        let tilt = self.tilt();
+        tilt > 0.0 && crate::ball::ROLLING_SHARE * tilt >= self.mu_roll
     }
 
     /// What is known of the parameter named `name` (None for an unknown name).
@@ -386,10 +409,8 @@ impl Params {
                 ),
             });
         }
-        // A resting ball must stay at rest: the tilt's pull on a rolling ball (5/7 g slope)
-        // must be less than the rolling resistance can hold (mu_roll g).
-        let tilt = self.slope_x.hypot(self.slope_y);
-        if tilt > 0.0 && 5.0 / 7.0 * tilt >= self.mu_roll {
+        if self.tilt_rolls_resting_balls() {
+            let tilt = self.tilt();
             return Err(ParamError {
                 name: if self.slope_x != 0.0 {
                     "slope_x"
@@ -399,7 +420,7 @@ impl Params {
                 reason: format!(
                     "a tilt of {tilt} rad would roll resting balls away: it must stay below \
                      7/5 mu_roll = {} rad",
-                    1.4 * self.mu_roll
+                    self.max_tilt()
                 ),
             });
         }
@@ -421,6 +442,30 @@ mod tests {
             assert_eq!(q.named().iter().filter(|(_, v)| *v >= 1000.0).count(), 1);
         }
         assert!(Params::default().field_mut("mu_slid").is_none());
+    }
+
+    #[test]
+    fn the_steepest_tilt_is_where_the_pull_meets_rolling_resistance() {
+        assert!((MAX_TILT_PER_MU_ROLL * crate::ball::ROLLING_SHARE - 1.0).abs() < 1e-15);
+        let p = Params::default();
+        let tilted = |share: f64| Params {
+            slope_x: 0.6 * share * p.max_tilt(),
+            slope_y: -0.8 * share * p.max_tilt(),
+            ..p
+        };
+        assert!(!tilted(0.999).tilt_rolls_resting_balls());
+        tilted(0.999).validate().unwrap();
+        assert!(tilted(1.001).tilt_rolls_resting_balls());
+        let e = tilted(1.001).validate().unwrap_err();
+        assert_eq!(e.name, "slope_x");
+        assert!(e.reason.contains("roll resting balls away"), "{e}");
+        // Without rolling resistance any tilt rolls a ball away; a level bed none.
+        let frictionless = Params {
+            mu_roll: 0.0,
+            ..tilted(0.5)
+        };
+        assert!(frictionless.tilt_rolls_resting_balls());
+        assert!(!Params { mu_roll: 0.0, ..p }.tilt_rolls_resting_balls());
     }
 
     #[test]

@@ -14,7 +14,7 @@ pub const UNPHYSICAL_MAX_EVENTS: usize = 5_000;
 
 /// How a scene ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Ending {
+pub enum SceneEnding {
     /// Simulated; every ball at rest, pocketed or off the table.
     AtRest,
     /// Rejected by the parser with a message (exit 2).
@@ -33,27 +33,27 @@ pub enum Ending {
     Panicked,
 }
 
-impl Ending {
+impl SceneEnding {
     /// Its name in reports.
     pub fn name(self) -> &'static str {
         match self {
-            Ending::AtRest => "at rest",
-            Ending::Rejected => "rejected",
-            Ending::DidNotStop => "still moving at max_time",
-            Ending::EventCap => "event cap",
-            Ending::Stuck => "stuck at an instant",
-            Ending::ImpactFailed => "impact failed",
-            Ending::NonFinite => "non-finite",
-            Ending::Panicked => "panic",
+            SceneEnding::AtRest => "at rest",
+            SceneEnding::Rejected => "rejected",
+            SceneEnding::DidNotStop => "still moving at max_time",
+            SceneEnding::EventCap => "event cap",
+            SceneEnding::Stuck => "stuck at an instant",
+            SceneEnding::ImpactFailed => "impact failed",
+            SceneEnding::NonFinite => "non-finite",
+            SceneEnding::Panicked => "panic",
         }
     }
 }
 
 /// What one scene did.
 #[derive(Clone, Debug)]
-pub struct Verdict {
+pub struct SceneCheck {
     /// How it ended.
-    pub ending: Ending,
+    pub ending: SceneEnding,
     /// Whether its parameters are a physical cloth's.
     pub physical: bool,
     /// Why not, if not.
@@ -65,14 +65,14 @@ pub struct Verdict {
     pub digest: u64,
 }
 
-fn sim_ending(e: &SimError) -> Ending {
+fn sim_ending(e: &SimError) -> SceneEnding {
     match e {
-        SimError::Setup(_) => Ending::Rejected,
-        SimError::TooManyEvents { .. } => Ending::EventCap,
-        SimError::Stuck { .. } => Ending::Stuck,
-        SimError::DidNotStop { .. } => Ending::DidNotStop,
-        SimError::Impact { .. } => Ending::ImpactFailed,
-        SimError::NonFinite { .. } => Ending::NonFinite,
+        SimError::Setup(_) => SceneEnding::Rejected,
+        SimError::TooManyEvents { .. } => SceneEnding::EventCap,
+        SimError::Stuck { .. } => SceneEnding::Stuck,
+        SimError::DidNotStop { .. } => SceneEnding::DidNotStop,
+        SimError::Impact { .. } => SceneEnding::ImpactFailed,
+        SimError::NonFinite { .. } => SceneEnding::NonFinite,
     }
 }
 
@@ -98,7 +98,7 @@ fn digest(x: impl Hash) -> u64 {
 }
 
 /// Runs `g` and checks it.
-pub fn check(g: &Generated) -> Verdict {
+pub fn check(g: &Generated) -> SceneCheck {
     let run = catch_unwind(AssertUnwindSafe(|| check_inner(g)));
     run.unwrap_or_else(|panic| {
         let why = panic
@@ -106,8 +106,8 @@ pub fn check(g: &Generated) -> Verdict {
             .cloned()
             .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
             .unwrap_or_default();
-        Verdict {
-            ending: Ending::Panicked,
+        SceneCheck {
+            ending: SceneEnding::Panicked,
             physical: g.physical,
             unphysical: None,
             failure: Some(format!("panic: {why}")),
@@ -116,7 +116,7 @@ pub fn check(g: &Generated) -> Verdict {
     })
 }
 
-fn check_inner(g: &Generated) -> Verdict {
+fn check_inner(g: &Generated) -> SceneCheck {
     let scene = match snooker_scene::parse(&g.text, "fuzz.toml") {
         Ok(s) => s,
         Err(e) => {
@@ -127,8 +127,8 @@ fn check_inner(g: &Generated) -> Verdict {
                     (!e.to_string().starts_with("fuzz.toml"))
                         .then(|| format!("the message does not name the file: {e}"))
                 });
-            return Verdict {
-                ending: Ending::Rejected,
+            return SceneCheck {
+                ending: SceneEnding::Rejected,
                 physical: g.physical,
                 unphysical: None,
                 digest: digest(e.to_string()),
@@ -138,7 +138,7 @@ fn check_inner(g: &Generated) -> Verdict {
     };
     let unphysical = unphysical_cloth(&scene.setup.params);
     let physical = unphysical.is_none();
-    let verdict = |ending, failure, digest| Verdict {
+    let verdict = |ending, failure, digest| SceneCheck {
         ending,
         physical,
         unphysical,
@@ -161,7 +161,7 @@ fn check_inner(g: &Generated) -> Verdict {
     let shot = match (first, second) {
         (Ok(a), Ok(b)) => {
             if bits(&a) != bits(&b) {
-                return verdict(Ending::AtRest, Some("not deterministic".into()), 0);
+                return verdict(SceneEnding::AtRest, Some("not deterministic".into()), 0);
             }
             a
         }
@@ -171,7 +171,7 @@ fn check_inner(g: &Generated) -> Verdict {
                 Some(format!("not deterministic: {a} / {b}"))
             } else {
                 match ending {
-                    Ending::DidNotStop | Ending::EventCap if !physical => None,
+                    SceneEnding::DidNotStop | SceneEnding::EventCap if !physical => None,
                     _ => Some(format!("{} (exit 1): {a}", ending.name())),
                 }
             };
@@ -179,12 +179,12 @@ fn check_inner(g: &Generated) -> Verdict {
         }
         (a, b) => {
             let why = format!("not deterministic: {:?} / {:?}", a.err(), b.err());
-            return verdict(Ending::AtRest, Some(why), 0);
+            return verdict(SceneEnding::AtRest, Some(why), 0);
         }
     };
     let broken = audit::events(&shot, MAX_OVERLAP);
     verdict(
-        Ending::AtRest,
+        SceneEnding::AtRest,
         audit::report(&broken[..broken.len().min(5)]),
         digest(bits(&shot)),
     )

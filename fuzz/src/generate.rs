@@ -6,8 +6,9 @@
 
 use rand::RngExt;
 use rand::rngs::ChaCha8Rng;
+use snooker_engine::ball::ROLLING_SHARE;
 use snooker_engine::cue::{self, Cue, MAX_CUE_SPEED, MAX_ELEVATION};
-use snooker_engine::params::{Bound, NOSE_HEIGHT_PER_RADIUS, PARAMS};
+use snooker_engine::params::{Bound, MAX_TILT_PER_MU_ROLL, NOSE_HEIGHT_PER_RADIUS, PARAMS};
 use snooker_engine::{BallState, Params, SnookerDims, Table, Vec3};
 use snooker_scene::write::{BallText, CueText, SceneText, num};
 use std::f64::consts::{PI, TAU};
@@ -110,7 +111,7 @@ const G0: f64 = 9.81;
 /// it rolls). On such a cloth a ball may still be moving after `max_time` or run into the
 /// event cap: a physical outcome, not a failure.
 pub fn unphysical_cloth(p: &Params) -> Option<&'static str> {
-    let push = 5.0 / 7.0 * (p.g * p.slope_x.hypot(p.slope_y) + p.nap_drift.abs());
+    let push = ROLLING_SHARE * (p.g * p.tilt() + p.nap_drift.abs());
     // With a speed scale, friction falls towards mu_slide_low as the slip stops.
     let least_slide = if p.slide_speed_scale > 0.0 {
         p.mu_slide.min(p.mu_slide_low)
@@ -407,9 +408,8 @@ impl Gen<'_> {
             set.retain(|(n, _)| *n != "mu_slide_low");
             set.push(("mu_slide_low", p.mu_slide));
         }
-        let tilt = p.slope_x.hypot(p.slope_y);
-        if tilt > 0.0 && 5.0 / 7.0 * tilt >= p.mu_roll {
-            let k = self.u(0.0, 0.99) * 1.4 * p.mu_roll / tilt;
+        if p.tilt_rolls_resting_balls() {
+            let k = self.u(0.0, 0.99) * MAX_TILT_PER_MU_ROLL * p.mu_roll / p.tilt();
             p.slope_x *= k;
             p.slope_y *= k;
             set.retain(|(n, _)| *n != "slope_x" && *n != "slope_y");

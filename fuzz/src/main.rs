@@ -80,7 +80,7 @@ fn main() -> ExitCode {
         bar.set_style(style.progress_chars("=> "));
     }
     // A scene's text is kept only if it fails: a run of 10^6 scenes must fit in memory.
-    let results: Vec<(u64, Kind, check::Verdict, f64, Option<String>)> = (first..end)
+    let results: Vec<(u64, Kind, check::SceneCheck, f64, Option<String>)> = (first..end)
         .into_par_iter()
         .map(|k| {
             let g = scene(seed, k);
@@ -96,7 +96,7 @@ fn main() -> ExitCode {
         })
         .collect();
     bar.finish_and_clear();
-    let mut table: BTreeMap<(Kind, check::Ending, bool), u64> = BTreeMap::new();
+    let mut table: BTreeMap<(Kind, check::SceneEnding, bool), u64> = BTreeMap::new();
     let mut failures = String::new();
     let mut failed = 0;
     for (k, kind, v, _, text) in &results {
@@ -153,7 +153,7 @@ fn main() -> ExitCode {
             kind.name(),
             times.len()
         );
-        let endings: Vec<check::Ending> = {
+        let endings: Vec<check::SceneEnding> = {
             let mut e: Vec<_> = table
                 .keys()
                 .filter(|(k, _, _)| *k == kind)
@@ -174,12 +174,12 @@ fn main() -> ExitCode {
         }
     }
     // Why the cloth was not a physical one, for the shots that did not stop.
-    let mut why: BTreeMap<(check::Ending, &str), u64> = BTreeMap::new();
+    let mut why: BTreeMap<(check::SceneEnding, &str), u64> = BTreeMap::new();
     for (_, _, v, _, _) in &results {
         if let Some(reason) = v.unphysical
             && matches!(
                 v.ending,
-                check::Ending::DidNotStop | check::Ending::EventCap
+                check::SceneEnding::DidNotStop | check::SceneEnding::EventCap
             )
         {
             *why.entry((v.ending, reason)).or_default() += 1;

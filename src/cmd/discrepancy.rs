@@ -3,7 +3,7 @@
 //! and Rerun overlays.
 
 use super::{bad_input, failed};
-use crate::output::{check_output, write_atomic};
+use crate::output::{check_output, check_output_dir, write_atomic};
 use crate::{plot, record};
 use anyhow::Context;
 use snooker_validation::discrepancy::{self as dsc, Findings, Measurement, data_file};
@@ -43,12 +43,7 @@ pub fn run(args: Args) -> ExitCode {
     }
     if let Some(d) = &args.report {
         // A file of that name, or a file on its way, is in the way of the report directory.
-        let in_the_way = if d.exists() && !d.is_dir() {
-            Err("is a file, not a directory".to_string())
-        } else {
-            check_output(&d.join("report.json"))
-        };
-        if let Err(e) = in_the_way {
+        if let Err(e) = check_output_dir(d, "report.json") {
             return bad_input(format!("--report {}: {e}", d.display()));
         }
     }

@@ -4,6 +4,7 @@
 
 use super::{bad_input, failed};
 use crate::{output, record};
+use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_engine::Vec3;
 use snooker_planner::{self as planner, Bounds, Noise, Plan, PlanError, Problem, Request};
@@ -149,7 +150,7 @@ pub fn run(args: Args) -> ExitCode {
     };
     let replay = match replay(&out_text, &file, &plan, problem.cue) {
         Ok(r) => r,
-        Err(e) => return failed(format!("internal error: {e}")),
+        Err(e) => return failed(format!("internal error: {e:#}")),
     };
     if !args.quiet {
         let text = summary(&plan);
@@ -163,7 +164,7 @@ pub fn run(args: Args) -> ExitCode {
         None => None,
         Some(out) => match recording(&problem, &plan, &replay) {
             Ok(bytes) => Some((out, bytes)),
-            Err(e) => return failed(format!("--record {}: {e}", out.display())),
+            Err(e) => return failed(format!("--record {}: {e:#}", out.display())),
         },
     };
     if let Some(out) = json {
@@ -224,16 +225,18 @@ fn replay(
     file: &str,
     plan: &Plan,
     cue: usize,
-) -> Result<(scene::Scene, snooker_engine::Shot), String> {
-    let sc = scene::parse(text, file).map_err(|e| format!("the planned scene: {e}"))?;
-    let shot = snooker_engine::simulate(&sc.setup, &sc.options)
-        .map_err(|e| format!("the planned scene: {e}"))?;
+) -> anyhow::Result<(scene::Scene, snooker_engine::Shot)> {
+    let sc = scene::parse(text, file).context("the planned scene")?;
+    let shot = snooker_engine::simulate(&sc.setup, &sc.options).context("the planned scene")?;
     let end = shot.final_states()[cue].pos;
     if [end.x.to_bits(), end.y.to_bits()] != plan.best.cue_final.map(f64::to_bits) {
-        return Err(format!(
+        anyhow::bail!(
             "the planned shot does not replay: the cue ball ends at ({}, {}), the plan says ({}, {})",
-            end.x, end.y, plan.best.cue_final[0], plan.best.cue_final[1]
-        ));
+            end.x,
+            end.y,
+            plan.best.cue_final[0],
+            plan.best.cue_final[1]
+        );
     }
     Ok((sc, shot))
 }
@@ -287,7 +290,7 @@ fn recording(
     problem: &Problem,
     plan: &Plan,
     replay: &(scene::Scene, snooker_engine::Shot),
-) -> Result<Vec<u8>, String> {
+) -> anyhow::Result<Vec<u8>> {
     let (sc, shot) = replay;
     let r = problem.setup.params.ball_radius;
     let mut overlays = vec![record::Overlay {
@@ -311,11 +314,8 @@ fn recording(
     });
     for (k, alt) in plan.alternatives.iter().enumerate() {
         let mut setup = problem.setup.clone();
-        setup.balls[problem.cue]
-            .strike(&alt.strike.cue(), &problem.setup.params)
-            .map_err(|e| e.to_string())?;
-        let alt_shot =
-            snooker_engine::simulate(&setup, &problem.options).map_err(|e| e.to_string())?;
+        setup.balls[problem.cue].strike(&alt.strike.cue(), &problem.setup.params)?;
+        let alt_shot = snooker_engine::simulate(&setup, &problem.options)?;
         let track = &alt_shot.tracks[problem.cue];
         let n = 200;
         overlays.push(record::Overlay {
@@ -330,6 +330,10 @@ fn recording(
             radius: 0.25 * r,
         });
     }
-    record::encode_with_overlays(sc, shot, &record::RecordOptions::default(), &overlays)
-        .map_err(|e| e.to_string())
+    Ok(record::encode_with_overlays(
+        sc,
+        shot,
+        &record::RecordOptions::default(),
+        &overlays,
+    )?)
 }

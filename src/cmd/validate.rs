@@ -15,7 +15,7 @@ pub const STUDY_STEPS: [f64; 5] = [4e-4, 2e-4, 1e-4, 5e-5, 2.5e-5];
 /// Arguments of `snooker validate`: the cross-check against rapier on the validation scenes
 /// (or the given ones).
 #[derive(clap::Args)]
-pub struct Request {
+pub struct Args {
     /// A scene file to check (repeatable); the built-in validation set when none is given.
     #[arg(long = "scene", value_name = "S")]
     pub scenes: Vec<PathBuf>,
@@ -33,9 +33,27 @@ pub struct Request {
     pub convergence: bool,
 }
 
-/// Why `snooker validate` stopped before comparing.
-#[derive(Debug)]
-pub struct BadInput(pub String);
+/// Why `snooker validate` stopped before comparing, or could not write its report.
+#[derive(Debug, thiserror::Error)]
+pub enum BadInput {
+    /// The time step is not in (0, 0.01] s.
+    #[error("--dt {0}: must be a time step in (0, 0.01] s")]
+    Dt(f64),
+    /// A scene file is not valid.
+    #[error(transparent)]
+    Scene(#[from] snooker_scene::SceneError),
+    /// The report could not be encoded as JSON.
+    #[error("the report as JSON: {0}")]
+    Json(#[from] serde_json::Error),
+    /// An output file could not be written.
+    #[error("cannot write {}: {source:#}", path.display())]
+    Write {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: anyhow::Error,
+    },
+}
 
 /// Loads the requested scenes (or the built-in set).
 pub fn load_scenes(paths: &[PathBuf]) -> Result<Vec<SceneSpec>, BadInput> {
@@ -47,8 +65,7 @@ pub fn load_scenes(paths: &[PathBuf]) -> Result<Vec<SceneSpec>, BadInput> {
     } else {
         paths.iter().map(|p| snooker_scene::load(p)).collect()
     };
-    let scenes = parsed.map_err(|e| BadInput(e.to_string()))?;
-    Ok(scenes
+    Ok(parsed?
         .into_iter()
         .map(|s| SceneSpec {
             name: s.name,
@@ -69,7 +86,7 @@ fn bar(len: usize) -> ProgressBar {
 }
 
 /// Runs the cross-check; returns the report.
-pub fn run(req: &Request, specs: &[SceneSpec]) -> Report {
+pub fn run(req: &Args, specs: &[SceneSpec]) -> Report {
     let pb = bar(specs.len());
     pb.set_prefix("cross-check");
     let mut runs = Vec::new();
@@ -122,15 +139,17 @@ pub fn run(req: &Request, specs: &[SceneSpec]) -> Report {
 
 /// Writes `text` to `path`, naming the path in the error.
 pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
-    crate::output::write_atomic(path, text.as_bytes())
-        .map_err(|e| BadInput(format!("cannot write {}: {e:#}", path.display())))
+    crate::output::write_atomic(path, text.as_bytes()).map_err(|source| BadInput::Write {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// Prints the report and writes the requested files.
-pub fn output(req: &Request, report: &Report) -> Result<(), BadInput> {
+pub fn output(req: &Args, report: &Report) -> Result<(), BadInput> {
     out!("{}", report::text(report));
     if let Some(p) = &req.json {
-        let text = serde_json::to_string_pretty(report).map_err(|e| BadInput(e.to_string()))?;
+        let text = serde_json::to_string_pretty(report)?;
         write(p, &(text + "\n"))?;
         outln!("JSON written to {}", p.display());
     }
@@ -142,22 +161,19 @@ pub fn output(req: &Request, report: &Report) -> Result<(), BadInput> {
 }
 
 /// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input.
-pub fn run_command(req: Request) -> std::process::ExitCode {
+pub fn run_command(req: Args) -> std::process::ExitCode {
     match execute(&req) {
         Ok(true) => std::process::ExitCode::SUCCESS,
         Ok(false) => std::process::ExitCode::from(super::FAILED),
-        Err(e) => super::bad_input(e.0),
+        Err(e) => super::bad_input(e),
     }
 }
 
 /// Checks the request, runs the cross-check and writes the outputs: `Ok(true)` when every
 /// verdict passed, `Ok(false)` when one failed, `Err` for bad input.
-pub fn execute(req: &Request) -> Result<bool, BadInput> {
+pub fn execute(req: &Args) -> Result<bool, BadInput> {
     if !(req.dt.is_finite() && req.dt > 0.0 && req.dt <= 1e-2) {
-        return Err(BadInput(format!(
-            "--dt {}: must be a time step in (0, 0.01] s",
-            req.dt
-        )));
+        return Err(BadInput::Dt(req.dt));
     }
     let specs = load_scenes(&req.scenes)?;
     let report = run(req, &specs);

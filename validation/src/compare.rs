@@ -1,7 +1,7 @@
 //! Figure-by-figure comparison of two digests of the same scene (or of the same stretch of
 //! it) against the tolerances of [`crate::tolerance`].
 
-use crate::digest::{Impact, Parties, ShotDigest};
+use crate::digest::{ImpactDigest, Parties, ShotDigest};
 use crate::tolerance::{Allowances, Budget, change_bound};
 use serde::Serialize;
 
@@ -332,7 +332,7 @@ fn change_figures(
     budget: &Budget,
     skip: &[usize],
 ) -> (Vec<Figure>, Vec<Figure>) {
-    let (a, b): (&Impact, &Impact) = (&ours.impacts[k], &rapier.impacts[k]);
+    let (a, b): (&ImpactDigest, &ImpactDigest) = (&ours.impacts[k], &rapier.impacts[k]);
     let incoming = a
         .before
         .iter()
@@ -452,7 +452,7 @@ fn compare_finals(ours: &ShotDigest, rapier: &ShotDigest, tol: &Allowances) -> V
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::digest::{Final, Impact, Velocities};
+    use crate::digest::{Final, ImpactDigest, Velocities};
     use snooker_engine::Params;
     use snooker_engine::Vec3;
 
@@ -464,7 +464,7 @@ mod tests {
         ShotDigest {
             ids: vec!["cue".into(), "red".into()],
             start: vec![k, k],
-            impacts: vec![Impact {
+            impacts: vec![ImpactDigest {
                 t,
                 parties: Parties::Balls(0, 1),
                 before: vec![k, k],

@@ -8,7 +8,7 @@ use crate::ensemble::{HALF_WIDTH, HEADING_STEP, Stat, StatRow, stats, summarise,
 use crate::rapier_run::{Rapier, RapierRun, Until};
 use crate::rapier_world::{ImpactFriction, WorldConfig};
 use crate::scenes::ImpactModels;
-use crate::shapes::{CushionContact, jaw_solid};
+use crate::shapes::{ContactHeight, jaw_solid};
 use crate::stretch::{self, Stretch, Stretches};
 use crate::tolerance::{Budget, allowances};
 use serde::Serialize;
@@ -322,7 +322,7 @@ pub fn check_shot(spec: &SceneSpec, models: ImpactModels, dt: f64, shot: &Shot) 
         dt,
         sink: whole.sink,
         friction: models.friction(),
-        level_cushions: cfg.cushion_contact == CushionContact::Level,
+        level_cushions: cfg.cushion_contact == ContactHeight::Level,
         nose_radius: jaw_solid(&p, jaw_radius, cfg.cushion_contact).0,
         jaw_contact: jaw_radius + p.cushion_contact_distance(),
         params: p,

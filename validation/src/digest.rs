@@ -83,7 +83,7 @@ impl From<&BallState> for Velocities {
 
 /// One impact.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Impact {
+pub struct ImpactDigest {
     /// When the bodies touch, s.
     pub t: f64,
     /// Who meets whom.
@@ -133,7 +133,7 @@ pub struct ShotDigest {
     /// Each ball's velocity and spin at the start.
     pub start: Vec<Velocities>,
     /// Impacts in time order.
-    pub impacts: Vec<Impact>,
+    pub impacts: Vec<ImpactDigest>,
     /// Slide-to-roll transitions in time order.
     pub rolls: Vec<Roll>,
     /// One per ball.
@@ -151,7 +151,7 @@ impl ShotDigest {
         for e in &shot.events {
             let kin = |s: &[BallState], k: usize| Velocities::from(&s[k]);
             let feature = || e.feature.clone().unwrap_or_default();
-            let single = |parties: Parties, approach: f64| Impact {
+            let single = |parties: Parties, approach: f64| ImpactDigest {
                 t: e.t,
                 parties,
                 before: vec![kin(&e.before, 0)],
@@ -163,7 +163,7 @@ impl ShotDigest {
                 EventKind::BallBall => {
                     let (a, b) = (e.balls[0], e.balls[1]);
                     let (i, j) = if a < b { (0, 1) } else { (1, 0) };
-                    impacts.push(Impact {
+                    impacts.push(ImpactDigest {
                         t: e.t,
                         parties: Parties::Balls(a.min(b), a.max(b)),
                         before: vec![kin(&e.before, i), kin(&e.before, j)],
@@ -256,7 +256,7 @@ impl ShotDigest {
     /// state after): a time-stepped solver cannot tell apart contacts that close within one
     /// step.
     pub fn normalised(&self, window: f64, min_approach: f64) -> ShotDigest {
-        let mut impacts: Vec<Impact> = Vec::new();
+        let mut impacts: Vec<ImpactDigest> = Vec::new();
         let mut last_t: Vec<(Parties, f64, usize)> = Vec::new();
         let resolved = self
             .impacts
@@ -329,12 +329,12 @@ impl ShotDigest {
 mod tests {
     use super::*;
 
-    fn imp(t: f64, a: usize, b: usize, v: f64) -> Impact {
+    fn imp(t: f64, a: usize, b: usize, v: f64) -> ImpactDigest {
         let k = Velocities {
             vel: Vec3::new(v, 0.0, 0.0),
             spin: Vec3::zeros(),
         };
-        Impact {
+        ImpactDigest {
             t,
             parties: Parties::Balls(a, b),
             before: vec![k; 2],
@@ -344,7 +344,7 @@ mod tests {
         }
     }
 
-    fn digest(impacts: Vec<Impact>) -> ShotDigest {
+    fn digest(impacts: Vec<ImpactDigest>) -> ShotDigest {
         ShotDigest {
             ids: vec!["a".into(), "b".into(), "c".into()],
             start: vec![Velocities::default(); 3],
@@ -362,7 +362,7 @@ mod tests {
             imp(0.10005, 1, 2, 2.0),
             imp(0.1001, 0, 1, 3.0),
             imp(0.5, 0, 1, 4.0),
-            Impact {
+            ImpactDigest {
                 approach: 0.1,
                 ..imp(0.7, 0, 1, 5.0)
             },

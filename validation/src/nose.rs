@@ -8,12 +8,12 @@
 //! pass in the manner of Box2D): the bounce along the tilted normal then pushes the ball down
 //! into the cloth, which takes that vertical velocity away inelastically in the next step, and
 //! part of the rebound is lost. The cross-check therefore runs the frictionless limit with level
-//! cushions ([`crate::shapes::CushionContact::Level`]), and this measurement shows the loss.
+//! cushions ([`crate::shapes::ContactHeight::Level`]), and this measurement shows the loss.
 
 use crate::crosscheck::{SceneSpec, run_both, world_config};
 use crate::digest::{Parties, ShotDigest};
 use crate::scenes::ImpactModels;
-use crate::shapes::CushionContact;
+use crate::shapes::ContactHeight;
 use serde::Serialize;
 use snooker_engine::Table;
 
@@ -48,7 +48,7 @@ fn first_rebound(digest: &ShotDigest, table: &Table) -> Option<(String, f64, f64
 /// cushions at the nose height; `None` when the scene has no cushion impact.
 pub fn nose_rebound(spec: &SceneSpec, dt: f64) -> Option<NoseRebound> {
     let mut cfg = world_config(ImpactModels::Frictionless, dt);
-    cfg.cushion_contact = CushionContact::Nose;
+    cfg.cushion_contact = ContactHeight::Nose;
     let (ours, rapier) = run_both(spec, ImpactModels::Frictionless, &cfg).ok()?;
     let (cushion, approach, e_ours) = first_rebound(&ours, &spec.setup.table)?;
     let (_, _, e_rapier) = first_rebound(&rapier.digest, &spec.setup.table)?;

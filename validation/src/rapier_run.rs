@@ -20,9 +20,11 @@
 //!   of a step, before it moves the bodies); the time is where its centre crossed the fall
 //!   circle, by linear interpolation back over the step before.
 
-use crate::digest::{Final, Impact, Parties, Roll, ShotDigest, Velocities};
-use crate::rapier_world::{ImpactFriction, Kinematics, TablePart, World, WorldConfig, rest_depth};
-use crate::shapes::{CushionContact, Feature, TableShapes};
+use crate::digest::{Final, ImpactDigest, Parties, Roll, ShotDigest, Velocities};
+use crate::rapier_world::{
+    ImpactFriction, RapierBallState, TablePart, World, WorldConfig, rest_depth,
+};
+use crate::shapes::{ContactHeight, Feature, TableShapes};
 use crate::table_laws::{rolling_resistance, sidespin_resistance};
 use snooker_engine::ball::SLIP_RATE_FACTOR;
 use snooker_engine::{BallState, Motion, Setup, Table, Vec3, motion};
@@ -46,7 +48,7 @@ pub enum Until<'a> {
     /// When every ball is at rest or pocketed.
     Rest,
     /// At the end of the first impact that satisfies the predicate (or at rest).
-    Impact(&'a dyn Fn(&Impact) -> bool),
+    Impact(&'a dyn Fn(&ImpactDigest) -> bool),
 }
 
 /// Per-ball bookkeeping between steps.
@@ -65,7 +67,7 @@ struct BallTrack {
 
 /// A ball is at rest once its speed is below what rolling resistance removes in one step,
 /// mu_r g dt (the integrator's resolution), and its spin below the matching R-scaled value.
-fn at_rest(k: &Kinematics, setup: &Setup, dt: f64) -> bool {
+fn at_rest(k: &RapierBallState, setup: &Setup, dt: f64) -> bool {
     let p = &setup.params;
     let v = p.mu_roll * p.g * dt;
     k.vel.norm() <= v
@@ -73,13 +75,13 @@ fn at_rest(k: &Kinematics, setup: &Setup, dt: f64) -> bool {
 }
 
 /// Depth a ball on the cloth has sunk into it, m.
-fn depth(k: &Kinematics, radius: f64) -> f64 {
+fn depth(k: &RapierBallState, radius: f64) -> f64 {
     (radius - k.pos.z).max(0.0)
 }
 
 /// Horizontal slip of the cloth contact point of a ball: rapier puts the contact point at
 /// mid-depth, R - depth/2 below the centre.
-fn slip(k: &Kinematics, radius: f64) -> f64 {
+fn slip(k: &RapierBallState, radius: f64) -> f64 {
     let r = Vec3::new(0.0, 0.0, -(radius - 0.5 * depth(k, radius)));
     let u = k.vel + k.spin.cross(&r);
     Vec3::new(u.x, u.y, 0.0).norm()
@@ -106,23 +108,23 @@ fn feature_name(table: &Table, f: Feature) -> String {
 /// deep in the cloth: a ball on the cloth sits at that depth, an airborne one at its height; a
 /// rolling ball rolls on rapier's contact point, at mid-depth (R - sink/2 below the centre),
 /// so that it does not start with a slip of sink/2R of its speed. `None` for a pocketed ball.
-pub fn counterpart(s: &BallState, radius: f64, sink: f64) -> Option<Kinematics> {
+pub fn counterpart(s: &BallState, radius: f64, sink: f64) -> Option<RapierBallState> {
     match s.motion {
         Motion::Pocketed | Motion::OffTable => None,
-        Motion::Airborne => Some(Kinematics {
+        Motion::Airborne => Some(RapierBallState {
             pos: Vec3::new(s.pos.x, s.pos.y, s.pos.z.max(radius)),
             vel: s.vel,
             spin: s.spin,
         }),
         Motion::Rolling => {
             let w = Vec3::z().cross(&s.vel) / (radius - 0.5 * sink);
-            Some(Kinematics {
+            Some(RapierBallState {
                 pos: Vec3::new(s.pos.x, s.pos.y, radius - sink),
                 vel: Vec3::new(s.vel.x, s.vel.y, 0.0),
                 spin: Vec3::new(w.x, w.y, s.spin.z),
             })
         }
-        Motion::Stationary | Motion::Spinning | Motion::Sliding => Some(Kinematics {
+        Motion::Stationary | Motion::Spinning | Motion::Sliding => Some(RapierBallState {
             pos: Vec3::new(s.pos.x, s.pos.y, radius - sink),
             vel: Vec3::new(s.vel.x, s.vel.y, 0.0),
             spin: s.spin,
@@ -148,7 +150,7 @@ pub struct Rapier<'a> {
 #[derive(Default)]
 struct RunState {
     tracks: Vec<BallTrack>,
-    impacts: Vec<Impact>,
+    impacts: Vec<ImpactDigest>,
     rolls: Vec<Roll>,
     pockets: Vec<Option<String>>,
     /// Contacts that carried an impulse in the last step, with the index of their impact.
@@ -166,7 +168,7 @@ impl<'a> Rapier<'a> {
             shapes: TableShapes::new(&setup.table, &setup.params, cfg.cushion_contact),
             world,
             friction_off_near_cushions: cfg.impact_friction == ImpactFriction::Off
-                && cfg.cushion_contact == CushionContact::Nose,
+                && cfg.cushion_contact == ContactHeight::Nose,
             rest_depth,
             sink: rest_depth,
             run: RunState::default(),
@@ -192,7 +194,7 @@ impl<'a> Rapier<'a> {
         max_time: f64,
     ) -> RapierRun {
         let p = self.setup.params;
-        let placed: Vec<Option<Kinematics>> = start
+        let placed: Vec<Option<RapierBallState>> = start
             .iter()
             .map(|s| counterpart(&motion::settle(*s, &p), p.ball_radius, self.rest_depth))
             .collect();
@@ -272,7 +274,7 @@ impl<'a> Rapier<'a> {
     /// Loads for the next step: rolling resistance on rolling balls, sidespin resistance on
     /// all on the cloth (in the air spin is frozen, thesis §6.1.6); in the frictionless limit,
     /// no cloth friction for a ball about to touch a cushion.
-    fn prepare(&mut self, before: &[Kinematics]) {
+    fn prepare(&mut self, before: &[RapierBallState]) {
         let p = self.setup.params;
         let dt = self.dt();
         for (i, k) in before.iter().enumerate() {
@@ -304,7 +306,7 @@ impl<'a> Rapier<'a> {
     }
 
     /// The parties a touch stands for, if it is an impact.
-    fn parties_of(&self, ball: usize, other: TablePart, at: &[Kinematics]) -> Option<Parties> {
+    fn parties_of(&self, ball: usize, other: TablePart, at: &[RapierBallState]) -> Option<Parties> {
         match other {
             TablePart::Ball(j) => Some(Parties::Balls(ball.min(j), ball.max(j))),
             TablePart::Cushion(_) | TablePart::Jaw(_) => {
@@ -320,7 +322,7 @@ impl<'a> Rapier<'a> {
     }
 
     /// Gap before the step and its closing speed, for an impact's parties.
-    fn gap_before(&self, c: &Parties, before: &[Kinematics]) -> (f64, f64) {
+    fn gap_before(&self, c: &Parties, before: &[RapierBallState]) -> (f64, f64) {
         match c {
             Parties::Balls(a, b) => {
                 let d = before[*b].pos - before[*a].pos;
@@ -342,7 +344,7 @@ impl<'a> Rapier<'a> {
         }
     }
 
-    fn velocities_of(c: &Parties, at: &[Kinematics]) -> Vec<Velocities> {
+    fn velocities_of(c: &Parties, at: &[RapierBallState]) -> Vec<Velocities> {
         c.balls()
             .iter()
             .map(|&i| Velocities {
@@ -359,7 +361,7 @@ impl<'a> Rapier<'a> {
         &mut self,
         c: &Parties,
         t0: f64,
-        before: &[Kinematics],
+        before: &[RapierBallState],
         after: Vec<Velocities>,
     ) -> usize {
         let dt = self.dt();
@@ -368,7 +370,7 @@ impl<'a> Rapier<'a> {
         for (&i, a) in c.balls().iter().zip(&after) {
             self.run.tracks[i].slide_from = (t, *a);
         }
-        self.run.impacts.push(Impact {
+        self.run.impacts.push(ImpactDigest {
             t,
             parties: c.clone(),
             before: Self::velocities_of(c, before),
@@ -381,7 +383,7 @@ impl<'a> Rapier<'a> {
 
     /// Impacts: contacts that start carrying an impulse open an impact; contacts that go on
     /// carrying one update its state after.
-    fn note_impacts(&mut self, t0: f64, before: &[Kinematics], now: &[Kinematics]) {
+    fn note_impacts(&mut self, t0: f64, before: &[RapierBallState], now: &[RapierBallState]) {
         let dt = self.dt();
         let mut current: Vec<Parties> = Vec::new();
         for touch in self.world.touches() {
@@ -408,7 +410,7 @@ impl<'a> Rapier<'a> {
 
     /// Landings: an airborne ball whose cloth contact carries an impulse again, until the cloth
     /// has stopped its fall. A ball whose cloth contact carries none has left the cloth.
-    fn note_landings(&mut self, t0: f64, before: &[Kinematics], now: &[Kinematics]) {
+    fn note_landings(&mut self, t0: f64, before: &[RapierBallState], now: &[RapierBallState]) {
         let dt = self.dt();
         let settled = self.setup.params.g * dt;
         let mut on_cloth = vec![false; self.world.len()];
@@ -453,7 +455,7 @@ impl<'a> Rapier<'a> {
     }
 
     /// Pots: a ball overlapping a pocket's sensor leaves play.
-    fn note_pots(&mut self, t0: f64, before: &[Kinematics]) {
+    fn note_pots(&mut self, t0: f64, before: &[RapierBallState]) {
         let dt = self.dt();
         for (i, b) in before.iter().enumerate() {
             if !self.world.in_play(i) {
@@ -477,7 +479,7 @@ impl<'a> Rapier<'a> {
             } else {
                 t0
             };
-            self.run.impacts.push(Impact {
+            self.run.impacts.push(ImpactDigest {
                 t,
                 parties: Parties::Pocket(i, pk.name.clone()),
                 before: vec![Velocities {
@@ -497,7 +499,7 @@ impl<'a> Rapier<'a> {
     }
 
     /// Slide-to-roll: the cloth contact of a moving ball starts sticking.
-    fn note_rolls(&mut self, t0: f64, now: &[Kinematics]) {
+    fn note_rolls(&mut self, t0: f64, now: &[RapierBallState]) {
         let p = self.setup.params;
         let dt = self.dt();
         let mut cloth = vec![None; self.world.len()];
@@ -542,14 +544,14 @@ impl<'a> Rapier<'a> {
         }
     }
 
-    fn all_at_rest(&self, now: &[Kinematics]) -> bool {
+    fn all_at_rest(&self, now: &[RapierBallState]) -> bool {
         let dt = self.dt();
         now.iter()
             .enumerate()
             .all(|(i, k)| !self.world.in_play(i) || at_rest(k, self.setup, dt))
     }
 
-    fn kinematics(&self) -> Vec<Kinematics> {
+    fn kinematics(&self) -> Vec<RapierBallState> {
         (0..self.world.len())
             .map(|i| self.world.kinematics(i))
             .collect()

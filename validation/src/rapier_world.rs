@@ -7,7 +7,7 @@
 //! - Cushions, jaws and pockets: the solids of [`crate::shapes`] (pockets as sensors).
 //! - Friction and restitution per pair, set by a contact hook from the scene's parameters.
 
-use crate::shapes::{CushionContact, TableShapes};
+use crate::shapes::{ContactHeight, TableShapes};
 use crate::table_laws::Load;
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::*;
@@ -126,20 +126,20 @@ pub struct WorldConfig {
     /// Solver iterations per step (rapier's default: 4).
     pub solver_iterations: usize,
     /// Where the cushions touch the balls.
-    pub cushion_contact: CushionContact,
+    pub cushion_contact: ContactHeight,
 }
 
 impl WorldConfig {
     /// rapier's default contact softness and solver, at time step `dt`, the cushions touching
     /// at the nose height with friction on and level in the frictionless limit (see
-    /// [`CushionContact`]).
+    /// [`ContactHeight`]).
     pub fn new(dt: f64, impact_friction: ImpactFriction) -> WorldConfig {
         WorldConfig {
             dt,
             impact_friction,
             cushion_contact: match impact_friction {
-                ImpactFriction::On => CushionContact::Nose,
-                ImpactFriction::Off => CushionContact::Level,
+                ImpactFriction::On => ContactHeight::Nose,
+                ImpactFriction::Off => ContactHeight::Level,
             },
             contact_hz: 60.0,
             contact_damping: 10.0,
@@ -213,7 +213,7 @@ pub struct Touch {
 
 /// Position, velocity and spin of a ball in rapier, table frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Kinematics {
+pub struct RapierBallState {
     /// Centre, m.
     pub pos: Vec3,
     /// Velocity, m/s.
@@ -361,7 +361,7 @@ impl World {
 
     /// Gives every ball the state `states[i]` (`None`: out of play, pocketed) and sets the
     /// clock to `t`, s.
-    pub fn place(&mut self, t: f64, states: &[Option<Kinematics>]) {
+    pub fn place(&mut self, t: f64, states: &[Option<RapierBallState>]) {
         for (slot, k) in self.balls.iter_mut().zip(states) {
             let rb = &mut self.phys.bodies[slot.body];
             match k {
@@ -410,9 +410,9 @@ impl World {
     }
 
     /// Ball `i`'s state.
-    pub fn kinematics(&self, i: usize) -> Kinematics {
+    pub fn kinematics(&self, i: usize) -> RapierBallState {
         let rb = &self.phys.bodies[self.balls[i].body];
-        Kinematics {
+        RapierBallState {
             pos: from_glam(rb.translation()),
             vel: from_glam(rb.linvel()),
             spin: from_glam(rb.angvel()),

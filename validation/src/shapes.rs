@@ -28,7 +28,7 @@ const DEFAULT_JAW_RADIUS: f64 = 0.010;
 
 /// Where the cushions touch a ball.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CushionContact {
+pub enum ContactHeight {
     /// At the nose height h = 7R/5, normal tilted by theta (thesis §6.2).
     Nose,
     /// At the height of the ball's centre, normal horizontal (equivalent without friction).
@@ -78,17 +78,17 @@ pub struct TableShapes {
 
 /// Radius and centre height of the sphere (or capsule) that stands for a jaw arc of plan
 /// radius `jaw_radius` (see the module docs).
-pub fn jaw_solid(p: &Params, jaw_radius: f64, contact: CushionContact) -> (f64, f64) {
+pub fn jaw_solid(p: &Params, jaw_radius: f64, contact: ContactHeight) -> (f64, f64) {
     let s = p.cushion_sin_theta();
     let cos_t = (1.0 - s * s).sqrt();
     let r = p.ball_radius;
     match contact {
-        CushionContact::Nose => {
+        ContactHeight::Nose => {
             let radius = jaw_radius / cos_t;
             (radius, r + (r + radius) * s)
         }
         // Touching when the centres are r_j + R cos(theta) apart in plan: R + radius.
-        CushionContact::Level => (jaw_radius - r * (1.0 - cos_t), r),
+        ContactHeight::Level => (jaw_radius - r * (1.0 - cos_t), r),
     }
 }
 
@@ -106,7 +106,7 @@ fn nearest_on_segment(a: Vec3, b: Vec3, p: Vec3) -> (Vec3, f64) {
 
 impl TableShapes {
     /// The solids of `table` for balls of parameters `p`, touching them as `contact` says.
-    pub fn new(table: &Table, p: &Params, contact: CushionContact) -> TableShapes {
+    pub fn new(table: &Table, p: &Params, contact: ContactHeight) -> TableShapes {
         let jaw_radius = table.jaws.first().map_or(DEFAULT_JAW_RADIUS, |j| j.radius);
         let (cap_r, cap_z) = jaw_solid(p, jaw_radius, contact);
         let lift = Vec3::new(0.0, 0.0, cap_z);
@@ -193,7 +193,7 @@ mod tests {
     fn nose_contact_is_at_seven_fifths_r_and_r_cos_theta_in_plan() {
         let p = Params::default();
         let table = Table::snooker(&Default::default());
-        let shapes = TableShapes::new(&table, &p, CushionContact::Nose);
+        let shapes = TableShapes::new(&table, &p, ContactHeight::Nose);
         let k = table
             .cushions
             .iter()
@@ -208,7 +208,7 @@ mod tests {
         assert!((contact.z - p.cushion_height).abs() < 1e-15);
         assert!(contact.y.abs() < 1e-15);
         // The level contact touches at the same plan distance, with a horizontal normal.
-        let level = TableShapes::new(&table, &p, CushionContact::Level);
+        let level = TableShapes::new(&table, &p, ContactHeight::Level);
         let (gap, n) = level.gap(Feature::Cushion(k), pos);
         assert!(gap.abs() < 1e-15, "{gap}");
         assert!(n.z.abs() < 1e-15);
@@ -218,8 +218,8 @@ mod tests {
     fn jaw_contact_follows_the_engine_rule() {
         let p = Params::default();
         let table = Table::snooker(&Default::default());
-        let shapes = TableShapes::new(&table, &p, CushionContact::Nose);
-        let level = TableShapes::new(&table, &p, CushionContact::Level);
+        let shapes = TableShapes::new(&table, &p, ContactHeight::Nose);
+        let level = TableShapes::new(&table, &p, ContactHeight::Level);
         for (k, j) in table.jaws.iter().enumerate() {
             let dir = Vec3::new(0.6, 0.8, 0.0);
             let pos = j.centre
@@ -239,7 +239,7 @@ mod tests {
     fn pocket_sphere_is_entered_with_the_centre_in_the_fall() {
         let p = Params::default();
         let table = Table::snooker(&Default::default());
-        let shapes = TableShapes::new(&table, &p, CushionContact::Nose);
+        let shapes = TableShapes::new(&table, &p, ContactHeight::Nose);
         let pk = &table.pockets[0];
         let s = &shapes.pockets[0];
         let pos = pk.centre + Vec3::new(pk.radius, 0.0, p.ball_radius);

@@ -15,7 +15,7 @@
 //! the derived tolerances, accumulated from zero at the start of each stretch.
 
 use crate::compare::{Comparison, End, Scope, compare};
-use crate::digest::{Impact, Parties, ShotDigest};
+use crate::digest::{ImpactDigest, Parties, ShotDigest};
 use crate::rapier_run::{Rapier, Until};
 use crate::tolerance::{Budget, allowances_from};
 use serde::Serialize;
@@ -108,7 +108,7 @@ pub fn check(s: &Stretches<'_>, rapier: &mut Rapier<'_>, budget: &Budget) -> Vec
     let (friction, slow) = (s.friction, s.normalise.1);
     // A contact closing slower is a resting contact (as in the digests), not an impact.
     let ends_stretch =
-        move |i: &Impact| i.approach >= slow && differs_by_design(friction, &i.parties);
+        move |i: &ImpactDigest| i.approach >= slow && differs_by_design(friction, &i.parties);
     let mut runs = Vec::new();
     for (from_k, to_k) in cuts(s.ours, s.friction, s.scope.impacts) {
         let (from, start) = match from_k {
@@ -176,7 +176,7 @@ mod tests {
             impacts: parties
                 .into_iter()
                 .enumerate()
-                .map(|(k, parties)| Impact {
+                .map(|(k, parties)| ImpactDigest {
                     t: k as f64,
                     parties,
                     before: vec![Velocities::default(); 2],

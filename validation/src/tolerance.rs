@@ -57,7 +57,7 @@
 //!   v dv / (mu_r g) further or shorter and up to (v^2 / 2 mu_r g) (dv / v) to the side; a time
 //!   error t' of the start of the roll moves it by v t'.
 
-use crate::digest::{Impact, Parties, ShotDigest};
+use crate::digest::{ImpactDigest, Parties, ShotDigest};
 use snooker_engine::Params;
 use snooker_engine::ball::INV_INERTIA_FACTOR;
 
@@ -173,7 +173,7 @@ fn incoming_gain(b: &Budget, parties: &Parties) -> f64 {
 /// At a curved contact (a ball pair, a jaw), how far the velocities after may move when the
 /// normal is taken at the start of rapier's step and the paths are offset sideways by
 /// `lateral` (see the module docs), m/s; zero elsewhere.
-fn curvature(b: &Budget, imp: &Impact, lateral: f64) -> f64 {
+fn curvature(b: &Budget, imp: &ImpactDigest, lateral: f64) -> f64 {
     let p = &b.params;
     let plan = |v: snooker_engine::Vec3| v.xy().norm();
     let (rho, k, rel) = match &imp.parties {
@@ -223,8 +223,8 @@ fn nose_delay(b: &Budget, parties: &Parties, approach: f64) -> f64 {
 /// sideways offset of the paths there ([`ImpactTol::lateral`]).
 pub fn change_bound(
     b: &Budget,
-    ours: &Impact,
-    rapier: &Impact,
+    ours: &ImpactDigest,
+    rapier: &ImpactDigest,
     incoming: f64,
     lateral: f64,
 ) -> (f64, f64) {

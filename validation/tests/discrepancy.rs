@@ -6,7 +6,7 @@
 
 use snooker_engine::cue::Cue;
 use snooker_engine::{Ball, BallKind, BallState, Models, Motion, Params, Setup, Table, Vec3};
-use snooker_validation::discrepancy::data::StrikeSpec;
+use snooker_validation::discrepancy::data::MeasuredStrike;
 use snooker_validation::discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
 use snooker_validation::discrepancy::{
     Effect, Findings, Measurement, Model, Nuisance, Options, ShotData, run,
@@ -113,7 +113,7 @@ fn side_strike() -> ShotData {
         offset: [0.012, 0.004],
         elevation: 0.08,
     };
-    s.strike = Some(StrikeSpec {
+    s.strike = Some(MeasuredStrike {
         ball: 0,
         before: s.setup.balls[0].state,
         cue,

@@ -4,7 +4,8 @@
 
 use super::data::Model;
 use serde::{Deserialize, Serialize};
-use snooker_engine::{BallBallModel, CushionModel};
+use snooker_engine::params::MAX_TILT_PER_MU_ROLL;
+use snooker_engine::{BallBallModel, CushionModel, Params};
 
 /// A physical effect the engine can switch on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -37,7 +38,7 @@ pub enum Effect {
 pub struct EffectParam {
     /// The engine parameter's scene-file name.
     pub name: &'static str,
-    /// Unit, for reports.
+    /// Its unit, as declared with the parameter (`snooker_engine::params::PARAMS`).
     pub unit: &'static str,
     /// Lowest admissible value.
     pub low: f64,
@@ -45,6 +46,20 @@ pub struct EffectParam {
     pub high: f64,
     /// Typical size of a change worth resolving (finite-difference and scaling step).
     pub scale: f64,
+}
+
+impl EffectParam {
+    /// The parameter `name` fitted within [`low`, `high`] at the resolution `scale`; its unit
+    /// is the one declared with it (every name of the catalogue is a parameter's: tested).
+    fn new(name: &'static str, low: f64, high: f64, scale: f64) -> Self {
+        EffectParam {
+            name,
+            unit: Params::info(name).map_or("", |i| i.unit),
+            low,
+            high,
+            scale,
+        }
+    }
 }
 
 impl Effect {
@@ -161,57 +176,31 @@ impl Effect {
     /// switched on in this model, as a tilt on a cloth without rolling resistance).
     pub fn params(self, model: &Model) -> Vec<EffectParam> {
         let p = &model.params;
-        let one = |name, unit, low, high, scale| {
-            vec![EffectParam {
-                name,
-                unit,
-                low,
-                high,
-                scale,
-            }]
-        };
+        let one = |name, low, high, scale| vec![EffectParam::new(name, low, high, scale)];
         match self {
-            Effect::RollingResistance => one("mu_roll", "", 0.0, 0.1, 1e-4),
+            Effect::RollingResistance => one("mu_roll", 0.0, 0.1, 1e-4),
             Effect::SpeedDependentSliding => vec![
-                EffectParam {
-                    name: "mu_slide_low",
-                    unit: "",
-                    low: 0.01,
-                    high: p.mu_slide,
-                    scale: 1e-3,
-                },
-                EffectParam {
-                    name: "slide_speed_scale",
-                    unit: "m/s",
-                    low: 0.01,
-                    high: 5.0,
-                    scale: 1e-2,
-                },
+                EffectParam::new("mu_slide_low", 0.01, p.mu_slide, 1e-3),
+                EffectParam::new("slide_speed_scale", 0.01, 5.0, 1e-2),
             ],
-            Effect::SidespinDecay => one("sidespin_decel", "rad/s^2", 0.0, 200.0, 0.1),
-            Effect::CushionSpeedRestitution => one("e_cushion_falloff", "per m/s", 0.0, 1.0, 1e-3),
-            Effect::BallRestitution => one("e_ball", "", 0.2, 1.0, 1e-3),
-            Effect::BallFriction => one("mu_ball", "", 0.0, 0.5, 1e-3),
-            Effect::CushionFriction => one("mu_cushion", "", 0.0, 0.8, 1e-3),
-            Effect::NapDrift => one("nap_drift", "m/s^2", -0.2, 0.2, 1e-4),
+            Effect::SidespinDecay => one("sidespin_decel", 0.0, 200.0, 0.1),
+            Effect::CushionSpeedRestitution => one("e_cushion_falloff", 0.0, 1.0, 1e-3),
+            Effect::BallRestitution => one("e_ball", 0.2, 1.0, 1e-3),
+            Effect::BallFriction => one("mu_ball", 0.0, 0.5, 1e-3),
+            Effect::CushionFriction => one("mu_cushion", 0.0, 0.8, 1e-3),
+            Effect::NapDrift => one("nap_drift", -0.2, 0.2, 1e-4),
             Effect::TableSlope => {
-                // A tilt must not roll resting balls away: 5/7 g tilt < mu_roll g (params.rs).
-                let max = 0.95 * 1.4 * p.mu_roll / std::f64::consts::SQRT_2;
+                // Either slope up to 95 % of the steepest tilt in both directions at once.
+                let max = 0.95 * MAX_TILT_PER_MU_ROLL * p.mu_roll / std::f64::consts::SQRT_2;
                 if max <= 0.0 {
                     return Vec::new();
                 }
                 ["slope_x", "slope_y"]
                     .into_iter()
-                    .map(|name| EffectParam {
-                        name,
-                        unit: "rad",
-                        low: -max,
-                        high: max,
-                        scale: 1e-5,
-                    })
+                    .map(|name| EffectParam::new(name, -max, max, 1e-5))
                     .collect()
             }
-            Effect::Squirt => one("cue_endmass", "kg", 0.0, 0.05, 1e-4),
+            Effect::Squirt => one("cue_endmass", 0.0, 0.05, 1e-4),
         }
     }
 
@@ -365,11 +354,22 @@ mod tests {
             assert!(!params.is_empty(), "{}", e.id());
             let names: Vec<&str> = params.iter().map(|p| p.name).collect();
             assert_eq!(names, e.names(), "{}", e.id());
+            for p in &params {
+                // Each is an engine parameter, with its declared unit, fitted inside its range.
+                let info = Params::info(p.name).unwrap_or_else(|| panic!("{}", p.name));
+                assert_eq!(p.unit, info.unit, "{}", p.name);
+                assert!(
+                    info.range.contains(p.low) && info.range.contains(p.high),
+                    "{}",
+                    p.name
+                );
+            }
             let values: Vec<f64> = params.iter().map(|p| 0.3 * p.low + 0.7 * p.high).collect();
             let m = e.apply(&on_model, &values);
             assert!(e.is_on(&m), "{}", e.id());
             assert_eq!(e.values(&m), values, "{}", e.id());
             assert!(m.params.validate().is_ok(), "{}", e.id());
+            assert!(!e.starts(&on_model).is_empty(), "{}", e.id());
             for start in e.starts(&on_model) {
                 assert_eq!(start.len(), params.len());
                 for (v, p) in start.iter().zip(&params) {

@@ -17,7 +17,7 @@ pub struct Model {
 
 /// One tracked centroid: ball `ball` seen at (x, y) at time `t`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Sample {
+pub struct TrackSample {
     /// Time since the shot's start, s.
     pub t: f64,
     /// Index of the ball in the shot's setup.
@@ -207,7 +207,7 @@ impl Nuisance {
 
 /// A cue strike that starts a shot.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct StrikeSpec {
+pub struct MeasuredStrike {
     /// Index of the struck ball.
     pub ball: usize,
     /// The ball's state before the strike.
@@ -225,9 +225,9 @@ pub struct ShotData {
     pub setup: Setup,
     /// The strike, if the shot starts with one: it is replayed with the model being tested
     /// (squirt depends on the cue's end mass).
-    pub strike: Option<StrikeSpec>,
+    pub strike: Option<MeasuredStrike>,
     /// Tracked centroids, in time order.
-    pub samples: Vec<Sample>,
+    pub samples: Vec<TrackSample>,
     /// Post-event quantities.
     pub observables: Vec<Observable>,
     /// Initial quantities to fit.
@@ -259,11 +259,106 @@ pub struct Measurement {
 
 /// A measurement the workflow cannot use.
 #[derive(Clone, Debug, PartialEq)]
-pub struct DataError(pub String);
+pub enum DataError {
+    /// The noise is not a positive number of metres.
+    Noise(f64),
+    /// No shots.
+    NoShots,
+    /// Neither tracks nor observables.
+    NothingMeasured,
+    /// A sample at a time that is not a time, or of a ball the shot does not have.
+    SampleBall {
+        /// The shot.
+        shot: String,
+        /// The sample's time, s.
+        t: f64,
+        /// The ball it names.
+        ball: usize,
+        /// Balls in the shot.
+        balls: usize,
+    },
+    /// A sample with a position that is not finite.
+    SampleNotFinite {
+        /// The shot.
+        shot: String,
+        /// The sample's time, s.
+        t: f64,
+    },
+    /// An observable of a missing ball, or without a finite value and a positive sigma.
+    Observable {
+        /// The shot.
+        shot: String,
+        /// The quantity's name.
+        quantity: &'static str,
+        /// When it is measured.
+        when: Moment,
+        /// The ball it names.
+        ball: usize,
+    },
+    /// A fitted quantity of a ball the shot does not have.
+    NuisanceBall {
+        /// The shot.
+        shot: String,
+        /// The ball it names.
+        ball: usize,
+    },
+    /// A strike quantity to be fitted in a shot without a strike.
+    NuisanceWithoutStrike {
+        /// The shot.
+        shot: String,
+        /// The quantity's name.
+        name: String,
+    },
+    /// A strike of a ball the shot does not have.
+    StrikeBall {
+        /// The shot.
+        shot: String,
+        /// The ball it names.
+        ball: usize,
+    },
+}
 
 impl std::fmt::Display for DataError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        match self {
+            DataError::Noise(v) => write!(f, "noise must be a positive number of metres, got {v}"),
+            DataError::NoShots => write!(f, "the measurement has no shots"),
+            DataError::NothingMeasured => {
+                write!(f, "the measurement has neither tracks nor observables")
+            }
+            DataError::SampleBall {
+                shot,
+                t,
+                ball,
+                balls,
+            } => write!(
+                f,
+                "shot {shot}: a sample at t = {t} refers to ball {ball} of {balls}"
+            ),
+            DataError::SampleNotFinite { shot, t } => {
+                write!(f, "shot {shot}: a sample at t = {t} is not finite")
+            }
+            DataError::Observable {
+                shot,
+                quantity,
+                when,
+                ball,
+            } => write!(
+                f,
+                "shot {shot}: observable {quantity} {when} of ball {ball} needs a finite value \
+                 and a positive sigma"
+            ),
+            DataError::NuisanceBall { shot, ball } => {
+                write!(f, "shot {shot}: fitted quantity refers to ball {ball}")
+            }
+            DataError::NuisanceWithoutStrike { shot, name } => write!(
+                f,
+                "shot {shot}: {name} is to be fitted but the scene has no [cue] strike"
+            ),
+            DataError::StrikeBall { shot, ball } => {
+                write!(f, "shot {shot}: the strike refers to ball {ball}")
+            }
+        }
     }
 }
 
@@ -274,55 +369,55 @@ impl Measurement {
     /// observables referring to existing balls with finite values, and strikes and nuisances
     /// that make sense.
     pub fn validate(&self) -> Result<(), DataError> {
-        let bad = |m: String| Err(DataError(m));
         if !(self.noise.is_finite() && self.noise > 0.0) {
-            return bad(format!(
-                "noise must be a positive number of metres, got {}",
-                self.noise
-            ));
+            return Err(DataError::Noise(self.noise));
         }
         if self.shots.is_empty() {
-            return bad("the measurement has no shots".into());
+            return Err(DataError::NoShots);
         }
         if self
             .shots
             .iter()
             .all(|s| s.samples.is_empty() && s.observables.is_empty())
         {
-            return bad("the measurement has neither tracks nor observables".into());
+            return Err(DataError::NothingMeasured);
         }
         for shot in &self.shots {
             let n = shot.setup.balls.len();
-            let name = &shot.name;
+            let name = || shot.name.clone();
             for s in &shot.samples {
                 if s.ball >= n || !(s.t.is_finite() && s.t >= 0.0) {
-                    return bad(format!(
-                        "shot {name}: a sample at t = {} refers to ball {} of {n}",
-                        s.t, s.ball
-                    ));
+                    return Err(DataError::SampleBall {
+                        shot: name(),
+                        t: s.t,
+                        ball: s.ball,
+                        balls: n,
+                    });
                 }
                 if !s.pos.iter().all(|v| v.is_finite()) {
-                    return bad(format!(
-                        "shot {name}: a sample at t = {} is not finite",
-                        s.t
-                    ));
+                    return Err(DataError::SampleNotFinite {
+                        shot: name(),
+                        t: s.t,
+                    });
                 }
             }
             for o in &shot.observables {
                 if o.ball >= n || !o.value.is_finite() || !(o.sigma.is_finite() && o.sigma > 0.0) {
-                    return bad(format!(
-                        "shot {name}: observable {} {} of ball {} needs a finite value and a \
-                         positive sigma",
-                        o.quantity.name(),
-                        o.when,
-                        o.ball
-                    ));
+                    return Err(DataError::Observable {
+                        shot: name(),
+                        quantity: o.quantity.name(),
+                        when: o.when,
+                        ball: o.ball,
+                    });
                 }
             }
             for nu in &shot.nuisances {
                 match *nu {
                     Nuisance::Pos(i) | Nuisance::Vel(i) | Nuisance::Spin(i) if i >= n => {
-                        return bad(format!("shot {name}: fitted quantity refers to ball {i}"));
+                        return Err(DataError::NuisanceBall {
+                            shot: name(),
+                            ball: i,
+                        });
                     }
                     Nuisance::StrikeSpeed
                     | Nuisance::StrikeAim
@@ -330,10 +425,10 @@ impl Measurement {
                     | Nuisance::StrikeElevation
                         if shot.strike.is_none() =>
                     {
-                        return bad(format!(
-                            "shot {name}: {} is to be fitted but the scene has no [cue] strike",
-                            nu.name(&shot.ids())
-                        ));
+                        return Err(DataError::NuisanceWithoutStrike {
+                            shot: name(),
+                            name: nu.name(&shot.ids()),
+                        });
                     }
                     _ => {}
                 }
@@ -341,10 +436,10 @@ impl Measurement {
             if let Some(st) = &shot.strike
                 && st.ball >= n
             {
-                return bad(format!(
-                    "shot {name}: the strike refers to ball {}",
-                    st.ball
-                ));
+                return Err(DataError::StrikeBall {
+                    shot: name(),
+                    ball: st.ball,
+                });
             }
         }
         Ok(())

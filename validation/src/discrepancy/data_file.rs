@@ -5,8 +5,8 @@
 //!
 //! Also writes the files `snooker synth` makes.
 
-use super::data::{Moment, Quantity, StrikeSpec};
-use super::{Measurement, Model, Nuisance, Observable, Sample, ShotData};
+use super::data::{MeasuredStrike, Moment, Quantity};
+use super::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
 use snooker_engine::motion::Transition;
 use snooker_engine::{EventKind, Models, Params};
@@ -154,10 +154,10 @@ fn ball_index(
 }
 
 /// Reads a tracks CSV: `t,ball,x,y`, in time order.
-fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<Sample>, SceneError> {
+fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<TrackSample>, SceneError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| error(path, "", format!("cannot read the tracks: {e}")))?;
-    let mut out: Vec<Sample> = Vec::new();
+    let mut out: Vec<TrackSample> = Vec::new();
     for (n, f) in csv_rows(&text, path, &["t", "ball", "x", "y"])? {
         let t = number(path, n, f[0], "t (s)")?;
         if t < 0.0 {
@@ -197,7 +197,7 @@ fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<Sample>, 
         }
         let x = number(path, n, f[2], "x (m)")?;
         let y = number(path, n, f[3], "y (m)")?;
-        out.push(Sample {
+        out.push(TrackSample {
             t,
             ball,
             pos: [x, y],
@@ -347,7 +347,7 @@ fn nuisance(s: &str, ids: &[String], has_strike: bool) -> Result<Nuisance, Strin
 
 /// A shot from a loaded scene: the setup with the strike applied, and the strike to replay.
 pub fn shot_from_scene(scene: &Scene) -> ShotData {
-    let strike = scene.strike.as_ref().map(|s| StrikeSpec {
+    let strike = scene.strike.as_ref().map(|s| MeasuredStrike {
         ball: s.index,
         before: s.before,
         cue: s.cue,
@@ -516,12 +516,12 @@ pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError
         noise,
         model: Model { params, models },
     };
-    m.validate().map_err(|e| error(path, "", e.0))?;
+    m.validate().map_err(|e| error(path, "", e.to_string()))?;
     Ok(m)
 }
 
 /// Formats tracks as the CSV of formats.md, with `comment` lines first.
-pub fn tracks_csv(samples: &[Sample], ids: &[String], comment: &str) -> String {
+pub fn tracks_csv(samples: &[TrackSample], ids: &[String], comment: &str) -> String {
     let mut out = String::new();
     for line in comment.lines() {
         out += &format!("# {line}\n");

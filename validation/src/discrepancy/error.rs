@@ -39,7 +39,8 @@ pub enum DiscrepancyError {
         /// Unknowns.
         unknowns: usize,
     },
-    /// The least-squares solver failed (its message).
+    /// The least-squares solver failed: MPFIT's words (its error type can be neither cloned
+    /// nor compared, as this one is).
     Solver(String),
     /// The effect has no admissible value in this model (a tilt without rolling resistance).
     NotApplicable,

@@ -17,6 +17,6 @@ pub mod synth;
 pub mod workflow;
 
 pub use catalogue::Effect;
-pub use data::{Measurement, Model, Moment, Nuisance, Observable, Quantity, Sample, ShotData};
+pub use data::{Measurement, Model, Moment, Nuisance, Observable, Quantity, ShotData, TrackSample};
 pub use error::DiscrepancyError;
-pub use workflow::{Findings, Options, Verdict, run};
+pub use workflow::{EffectVerdict, Findings, Options, run};

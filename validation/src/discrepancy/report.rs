@@ -139,7 +139,8 @@ fn format_fitted(f: &Fitted) -> String {
         .zip(&f.values)
         .zip(&f.errors)
         .map(|((p, v), e)| {
-            let unit = if p.unit.is_empty() {
+            // A pure number's unit ("1") is not written.
+            let unit = if p.unit == "1" {
                 String::new()
             } else {
                 format!(" {}", p.unit)

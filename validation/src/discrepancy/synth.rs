@@ -5,7 +5,7 @@
 //! too, to check the workflow says "unexplained" rather than name a wrong effect.
 
 use super::catalogue::Effect;
-use super::data::{Model, Sample, ShotData};
+use super::data::{Model, ShotData, TrackSample};
 use super::error::DiscrepancyError;
 use super::residuals::setup_for;
 use rand::RngExt;
@@ -114,7 +114,7 @@ pub fn film(
     truth: &Model,
     uncatalogued: &[Uncatalogued],
     camera: &Camera,
-) -> Result<(Shot, Vec<Sample>), DiscrepancyError> {
+) -> Result<(Shot, Vec<TrackSample>), DiscrepancyError> {
     check_camera(camera)?;
     let values = super::residuals::scene_values(shot);
     let setup = setup_for(shot, truth, &values)?;
@@ -147,7 +147,7 @@ pub fn film(
                 continue;
             }
             let extra = offsets(b, t);
-            samples.push(Sample {
+            samples.push(TrackSample {
                 t,
                 ball: b,
                 pos: [

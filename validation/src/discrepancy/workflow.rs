@@ -64,12 +64,12 @@ pub struct Candidate {
     /// Share of the current excess chi2 it explains.
     pub share: f64,
     /// What the workflow made of it.
-    pub verdict: Verdict,
+    pub verdict: EffectVerdict,
 }
 
 /// What the workflow made of a candidate effect in one step.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Verdict {
+pub enum EffectVerdict {
     /// It passed every test but another candidate was better (reported as "").
     Qualified,
     /// It was named.
@@ -86,32 +86,32 @@ pub enum Verdict {
     Failed(DiscrepancyError),
 }
 
-impl Verdict {
+impl EffectVerdict {
     /// The verdict of a candidate that could not be fitted.
-    fn of_error(e: DiscrepancyError) -> Verdict {
+    fn of_error(e: DiscrepancyError) -> EffectVerdict {
         match e {
-            DiscrepancyError::NotApplicable => Verdict::NotApplicable,
-            e => Verdict::Failed(e),
+            DiscrepancyError::NotApplicable => EffectVerdict::NotApplicable,
+            e => EffectVerdict::Failed(e),
         }
     }
 }
 
-impl std::fmt::Display for Verdict {
+impl std::fmt::Display for EffectVerdict {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Verdict::Qualified => Ok(()),
-            Verdict::Named => f.write_str("named"),
-            Verdict::NotSignificant => f.write_str("not significant"),
-            Verdict::ExplainsTooLittle => f.write_str("explains too little"),
-            Verdict::Indistinguishable => f.write_str("indistinguishable"),
-            Verdict::NotApplicable => write!(f, "{}", DiscrepancyError::NotApplicable),
-            Verdict::Failed(e) => write!(f, "failed: {e}"),
+            EffectVerdict::Qualified => Ok(()),
+            EffectVerdict::Named => f.write_str("named"),
+            EffectVerdict::NotSignificant => f.write_str("not significant"),
+            EffectVerdict::ExplainsTooLittle => f.write_str("explains too little"),
+            EffectVerdict::Indistinguishable => f.write_str("indistinguishable"),
+            EffectVerdict::NotApplicable => write!(f, "{}", DiscrepancyError::NotApplicable),
+            EffectVerdict::Failed(e) => write!(f, "failed: {e}"),
         }
     }
 }
 
 /// Reports give the verdict as its text.
-impl Serialize for Verdict {
+impl Serialize for EffectVerdict {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.collect_str(self)
     }
@@ -246,7 +246,7 @@ fn try_effect(
         return Err(DiscrepancyError::NotApplicable);
     }
     let mut best: Option<FitResult> = None;
-    let mut last_err = DiscrepancyError::Solver("no starting point".into());
+    let mut last_err = None;
     // The initial quantities from the current fit, and afresh from the data: the current ones
     // may have bent to make up for the very effect being tried.
     let fresh: Vec<_> = m.shots.iter().map(starting_values).collect();
@@ -257,11 +257,12 @@ fn try_effect(
             match fit(m, &m.model, &list, nuisances) {
                 Ok(r) if best.as_ref().is_none_or(|b| r.chi2 < b.chi2) => best = Some(r),
                 Ok(_) => {}
-                Err(e) => last_err = e,
+                Err(e) => last_err = Some(e),
             }
         }
     }
-    best.ok_or(last_err)
+    // Every effect has a start (tested): without one it could not be fitted at all.
+    best.ok_or_else(|| last_err.unwrap_or(DiscrepancyError::NotApplicable))
 }
 
 /// Runs the workflow on `m` from its model.
@@ -309,7 +310,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                             fitted,
                             delta_bic,
                             share,
-                            verdict: Verdict::Qualified,
+                            verdict: EffectVerdict::Qualified,
                         },
                         Some(r),
                     )
@@ -320,7 +321,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                         fitted: None,
                         delta_bic: f64::INFINITY,
                         share: 0.0,
-                        verdict: Verdict::of_error(e),
+                        verdict: EffectVerdict::of_error(e),
                     },
                     None,
                 ),
@@ -333,23 +334,23 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         });
         for (c, _) in cands
             .iter_mut()
-            .filter(|(c, _)| c.verdict == Verdict::Qualified)
+            .filter(|(c, _)| c.verdict == EffectVerdict::Qualified)
         {
             c.verdict = if c.delta_bic > -opts.threshold {
-                Verdict::NotSignificant
+                EffectVerdict::NotSignificant
             } else if c.share < opts.min_share {
-                Verdict::ExplainsTooLittle
+                EffectVerdict::ExplainsTooLittle
             } else {
-                Verdict::Qualified
+                EffectVerdict::Qualified
             };
         }
         // The best-scoring effect is the only one that may be named.
         if cands
             .first()
-            .is_none_or(|(c, _)| c.verdict != Verdict::Qualified)
+            .is_none_or(|(c, _)| c.verdict != EffectVerdict::Qualified)
         {
             if let Some((c, _)) = cands.first()
-                && c.verdict == Verdict::ExplainsTooLittle
+                && c.verdict == EffectVerdict::ExplainsTooLittle
             {
                 stop_reason = Some(format!(
                     "the best candidate, {}, would lower the BIC by {:.0} but explains only \
@@ -377,7 +378,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                 .collect();
             for (c, _) in cands.iter_mut() {
                 if ambiguous.contains(&c.effect) {
-                    c.verdict = Verdict::Indistinguishable;
+                    c.verdict = EffectVerdict::Indistinguishable;
                 }
             }
             stop_reason = Some(format!(
@@ -393,7 +394,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
             last_candidates = cands.into_iter().map(|(c, _)| c).collect();
             break;
         }
-        cands[i].0.verdict = Verdict::Named;
+        cands[i].0.verdict = EffectVerdict::Named;
         let (cand, Some(r)) = cands.swap_remove(i) else {
             unreachable!("a qualified candidate has a fit");
         };
