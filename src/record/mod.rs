@@ -17,7 +17,7 @@ use rerun::{
     TimeColumn, Transform3D, ViewCoordinates,
 };
 use sample::{Schedule, Side};
-use snooker_engine::sim::Track;
+use snooker_engine::sim::{Track, orientation};
 use snooker_engine::{BallState, EventKind, Motion, Params, Shot, Vec3};
 use snooker_scene::Scene;
 use std::collections::VecDeque;
@@ -271,7 +271,8 @@ impl Ball<'_> {
                 .with_many_translation(self.states.iter().map(|s| f32x3(s.pos)))
                 .columns_of_unit_batches(),
         )?;
-        let q = sample::orientations(self.track, self.params, &self.schedule.instants);
+        let times: Vec<f64> = self.schedule.instants.iter().map(|i| i.t).collect();
+        let q = orientation::orientations(self.track, self.params, &times);
         self.send(
             path(&["balls", id], "body"),
             all(),

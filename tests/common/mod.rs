@@ -1,8 +1,6 @@
 //! Shared helpers of the command line's integration tests.
 #![allow(dead_code)]
 
-use snooker_engine::audit::{audit, report};
-use snooker_engine::{Ending, Setup, Shot};
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
@@ -20,13 +18,4 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-/// Asserts that `shot` ended at rest and broke none of the invariants of
-/// [`snooker_engine::audit`].
-pub fn check_shot(setup: &Setup, shot: &Shot) {
-    assert_eq!(shot.ending, Ending::AtRest, "the shot did not end at rest");
-    if let Some(broken) = report(&audit(setup, shot)) {
-        panic!("{broken}");
-    }
 }

@@ -9,6 +9,7 @@
 
 pub mod error;
 pub mod event;
+pub mod orientation;
 pub mod queue;
 pub mod setup;
 pub mod shot;

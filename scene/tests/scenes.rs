@@ -1,20 +1,28 @@
-//! Every scene in `scenes/` loads, simulates cleanly (the brute-force checks of
-//! `common::check_shot`) and does what its name says.
+//! Every scene in the repository's `scenes/` loads, simulates cleanly (`check_shot`: the
+//! invariants of `snooker_engine::audit`) and does what its name says.
 
-mod common;
-
+use snooker_engine::audit::{audit, report};
 use snooker_engine::motion::Transition;
-use snooker_engine::{EventKind, Shot, SimOptions, simulate};
+use snooker_engine::{Ending, EventKind, Setup, Shot, SimOptions, simulate};
 use snooker_scene as scene;
 use std::path::Path;
 
+/// Asserts that `shot` ended at rest and broke none of the invariants of
+/// [`snooker_engine::audit`].
+fn check_shot(setup: &Setup, shot: &Shot) {
+    assert_eq!(shot.ending, Ending::AtRest, "the shot did not end at rest");
+    if let Some(broken) = report(&audit(setup, shot)) {
+        panic!("{broken}");
+    }
+}
+
 fn run(name: &str) -> (scene::Scene, Shot) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
+        .join("../scenes")
         .join(format!("{name}.toml"));
     let sc = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let shot = simulate(&sc.setup, &sc.options).unwrap_or_else(|e| panic!("{name}: {e}"));
-    common::check_shot(&sc.setup, &shot);
+    check_shot(&sc.setup, &shot);
     (sc, shot)
 }
 
@@ -28,14 +36,14 @@ fn cushions_of(shot: &Shot, ball: usize) -> Vec<String> {
 
 #[test]
 fn every_scene_file_simulates_cleanly() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     let mut n = 0;
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "toml") {
             let sc = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
             let shot = simulate(&sc.setup, &SimOptions::default()).unwrap();
-            common::check_shot(&sc.setup, &shot);
+            check_shot(&sc.setup, &shot);
             n += 1;
         }
     }
@@ -105,7 +113,7 @@ fn the_cut_is_thirty_degrees() {
 #[test]
 fn table_i_scenes_meet_at_the_measured_speed_and_cut() {
     let data = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/thesis_oblique_collisions.csv"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../data/thesis_oblique_collisions.csv"),
     )
     .unwrap();
     let rows: Vec<Vec<f64>> = data
@@ -164,7 +172,7 @@ fn the_chapter_7_example_strikes_as_the_thesis_describes() {
 /// scene file.
 fn post_slip_speeds(file: &str) -> (f64, f64) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
+        .join("../scenes")
         .join(file);
     let sc = scene::load(&path).unwrap();
     let shot = snooker_engine::simulate(&sc.setup, &sc.options).unwrap();
@@ -182,7 +190,7 @@ fn post_slip_speeds(file: &str) -> (f64, f64) {
 fn table_i_collisions_within_three_percent() {
     // Thesis appendix III (AJP 2009), Table I: rolling cue ball, measured speeds once sliding
     // has ended. The ideal Wallace & Schroeder model is 6.4 % off on average.
-    let data = include_str!("../data/thesis_oblique_collisions.csv");
+    let data = include_str!("../../data/thesis_oblique_collisions.csv");
     let rows: Vec<Vec<f64>> = data
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("speed_in"))
