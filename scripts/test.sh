@@ -24,10 +24,10 @@ cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --profile ci -- -D warnings
 cargo test --workspace --profile ci
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
-# (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml. Built with
-# the workspace's features (`cargo run -p` would resolve the fuzz crate's alone and build the
-# engine a second time, about a minute here; the results are the same bits either way).
-cargo build --workspace --profile ci --bins
+# (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml. The binary
+# is the one `cargo test` built for fuzz/tests (`cargo run -p` or `cargo build` would resolve
+# other features and build the engine, or rerun's dependencies, again; the results are the
+# same bits either way).
 "${CARGO_TARGET_DIR:-target}/ci/snooker-fuzz" --scenes 10000
 # The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
 scripts/python_tests.sh

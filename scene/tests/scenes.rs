@@ -73,25 +73,15 @@ fn screw_comes_back_follow_runs_on_stun_stops_near_the_contact() {
         "screw: cue ball ends at {end}, started at {}",
         start(&sc)
     );
+    // Where the cue ball is just after it meets the object ball.
+    let contact = |shot: &Shot| {
+        let hit = shot.events.iter().find(|e| e.kind == EventKind::BallBall);
+        hit.unwrap().after[0].pos.x
+    };
     let (_, shot) = run("follow");
-    let c = shot
-        .events
-        .iter()
-        .find(|e| e.kind == EventKind::BallBall)
-        .unwrap()
-        .after[0]
-        .pos
-        .x;
-    assert!(shot.final_states()[0].pos.x > c + 0.1);
+    assert!(shot.final_states()[0].pos.x > contact(&shot) + 0.1);
     let (_, shot) = run("stun");
-    let c = shot
-        .events
-        .iter()
-        .find(|e| e.kind == EventKind::BallBall)
-        .unwrap()
-        .after[0]
-        .pos
-        .x;
+    let c = contact(&shot);
     let end = shot.final_states()[0].pos.x;
     assert!((end - c).abs() < 0.2, "stun moved on {:.3} m", end - c);
 }

@@ -6,7 +6,7 @@ use super::catalogue::Effect;
 use super::data::Measurement;
 use super::fit::Fitted;
 use super::residuals::Gap;
-use super::workflow::{Candidate, Findings, State};
+use super::workflow::{CandidateEffect, Findings, State};
 use serde_json::{Map, Value, json};
 
 fn params_of(f: &Fitted) -> (Value, Value) {
@@ -19,7 +19,7 @@ fn params_of(f: &Fitted) -> (Value, Value) {
     (Value::Object(values), Value::Object(errors))
 }
 
-fn candidate(c: &Candidate) -> Value {
+fn candidate(c: &CandidateEffect) -> Value {
     let (params, uncertainties) = c.fitted.as_ref().map_or((json!({}), json!({})), params_of);
     json!({
         "effect": c.effect.id(),

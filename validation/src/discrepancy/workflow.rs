@@ -54,7 +54,7 @@ impl Default for Options {
 
 /// How one candidate fared in one step.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Candidate {
+pub struct CandidateEffect {
     /// The effect.
     pub effect: Effect,
     /// Its fitted values and uncertainties (None when it could not be fitted).
@@ -133,7 +133,7 @@ pub struct Step {
     /// BIC change of the step.
     pub delta_bic: f64,
     /// Every candidate tried at this step.
-    pub candidates: Vec<Candidate>,
+    pub candidates: Vec<CandidateEffect>,
 }
 
 /// A fit's summary for reports.
@@ -168,7 +168,7 @@ pub struct Findings {
     /// Named effects, in order.
     pub steps: Vec<Step>,
     /// The candidates of the last, unsuccessful step (why nothing more was named).
-    pub last_candidates: Vec<Candidate>,
+    pub last_candidates: Vec<CandidateEffect>,
     /// The final fit.
     pub last: FitResult,
     /// Its summary.
@@ -292,7 +292,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
             .map(|&e| (e, try_effect(m, &named, &current, e)))
             .collect();
         let (excess_now, _) = excess(&current, opts);
-        let mut cands: Vec<(Candidate, Option<FitResult>)> = fits
+        let mut cands: Vec<(CandidateEffect, Option<FitResult>)> = fits
             .into_iter()
             .map(|(effect, r)| match r {
                 Ok(r) => {
@@ -305,7 +305,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                     };
                     let fitted = r.effects.last().cloned();
                     (
-                        Candidate {
+                        CandidateEffect {
                             effect,
                             fitted,
                             delta_bic,
@@ -316,7 +316,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                     )
                 }
                 Err(e) => (
-                    Candidate {
+                    CandidateEffect {
                         effect,
                         fitted: None,
                         delta_bic: f64::INFINITY,
@@ -398,7 +398,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         let (cand, Some(r)) = cands.swap_remove(i) else {
             unreachable!("a qualified candidate has a fit");
         };
-        let mut candidates: Vec<Candidate> = vec![cand.clone()];
+        let mut candidates: Vec<CandidateEffect> = vec![cand.clone()];
         candidates.extend(cands.into_iter().map(|(c, _)| c));
         candidates.sort_by(|a, b| a.delta_bic.total_cmp(&b.delta_bic));
         named = r

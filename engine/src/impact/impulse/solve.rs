@@ -197,6 +197,15 @@ impl Impact {
         })
     }
 
+    /// The work at which restitution ends, once compression has ended with the work `w_c`
+    /// done: (1 - e^2) W_c (thesis eq. 6.12b). None when nothing is left to restore (e = 0, or
+    /// e so small that e^2 W_c rounds away): restitution is then over at once, not a phase
+    /// searching for a crossing of the work it already has.
+    fn restitution_target(&self, w_c: f64) -> Option<f64> {
+        let target = (1.0 - self.e * self.e) * w_c;
+        (target != w_c).then_some(target)
+    }
+
     /// Sets to zero the vertical speed of each ball on the cloth that is within [`LANDED`] of
     /// it. A ball on the cloth is either held down by it or rising (thesis §6.1.2); the
     /// support event, zero within the same resolution, does not see a ball rising or sinking
@@ -247,11 +256,10 @@ impl Impact {
             if compressing && self.primary_motion::<M, P>(&y).1 <= 0.0 {
                 compressing = false;
                 p_c = p;
-                let w_c = y[P::WORK];
-                w_target = (1.0 - self.e * self.e) * w_c;
-                if w_target == w_c {
+                let Some(target) = self.restitution_target(y[P::WORK]) else {
                     break;
-                }
+                };
+                w_target = target;
             }
             let mode = self.mode_at::<M, P>(&y, compressing, w_target, zero);
             let ph = self.integrate_phase::<M, P>(&mode, p, y, h, tol, paths.establish, |x, yy| {
@@ -286,14 +294,10 @@ impl Impact {
                 Event::Compressed => {
                     compressing = false;
                     p_c = p;
-                    let w_c = y[P::WORK];
-                    w_target = (1.0 - self.e * self.e) * w_c;
-                    // Nothing to restore (e = 0, or e so small that e^2 W_c rounds away):
-                    // restitution is over at once, not a phase searching for a crossing of
-                    // the work it already has.
-                    if w_target == w_c {
+                    let Some(target) = self.restitution_target(y[P::WORK]) else {
                         break;
-                    }
+                    };
+                    w_target = target;
                 }
                 Event::Restituted => break,
                 Event::Slip(_) => {
