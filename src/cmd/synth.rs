@@ -104,11 +104,11 @@ fn hidden(effects: &[String], base: &Model) -> anyhow::Result<Hidden> {
             for (p, v) in params.iter().zip(&values) {
                 if *v < p.low || *v > p.high {
                     bail!(
-                        "--effect {spec}: {} = {v} is outside [{}, {}] {}",
+                        "--effect {spec}: {} = {v} is outside [{}, {}]{}",
                         p.name,
                         p.low,
                         p.high,
-                        p.unit
+                        p.unit_suffix()
                     );
                 }
             }

@@ -60,6 +60,15 @@ impl EffectParam {
             scale,
         }
     }
+
+    /// The unit as written after a value: " m/s", or nothing for a pure number ("1").
+    pub fn unit_suffix(&self) -> String {
+        if self.unit == "1" {
+            String::new()
+        } else {
+            format!(" {}", self.unit)
+        }
+    }
 }
 
 impl Effect {

@@ -138,15 +138,7 @@ fn format_fitted(f: &Fitted) -> String {
         .iter()
         .zip(&f.values)
         .zip(&f.errors)
-        .map(|((p, v), e)| {
-            // A pure number's unit ("1") is not written.
-            let unit = if p.unit == "1" {
-                String::new()
-            } else {
-                format!(" {}", p.unit)
-            };
-            format!("{} = {v:.5} ± {e:.2e}{unit}", p.name)
-        })
+        .map(|((p, v), e)| format!("{} = {v:.5} ± {e:.2e}{}", p.name, p.unit_suffix()))
         .collect::<Vec<_>>()
         .join(", ")
 }
