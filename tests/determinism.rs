@@ -1,4 +1,5 @@
-//! The same scene gives bit-identical results, through the library and through the CLI.
+//! The same scene gives bit-identical results, through the library and through the CLI, and the
+//! break-off ends where it always has (its final state hash is pinned).
 
 use snooker_scene::{self as scene, result};
 use std::process::Command;

@@ -3,7 +3,8 @@
 //! Between events every ball follows a closed-form law ([`motion`]: sliding, rolling,
 //! spinning, airborne); [`detect`] finds the next event exactly (ball-ball, cushion, jaw,
 //! pocket, end of a law); [`impact`] resolves impacts with a model chosen per scene; [`sim`]
-//! runs the loop and records a [`sim::Shot`] that can be evaluated at any time.
+//! runs the loop and records a [`sim::Shot`] that can be evaluated at any time (positions,
+//! velocities and, by [`sim::orientation`], each ball's orientation).
 //!
 //! Units are SI throughout; the frame is the table frame of [`table::snooker`].
 //! The physics follows S. Mathavan's thesis (Loughborough University, 2009), cited by section.

@@ -305,7 +305,7 @@ impl Params {
         self.slope_x.hypot(self.slope_y)
     }
 
-    /// The steepest tilt, rad, on which a ball at rest stays at rest,
+    /// The tilt, rad, below which a ball at rest stays at rest:
     /// [`MAX_TILT_PER_MU_ROLL`] `mu_roll`.
     pub fn max_tilt(&self) -> f64 {
         MAX_TILT_PER_MU_ROLL * self.mu_roll

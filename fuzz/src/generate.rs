@@ -480,7 +480,7 @@ pub fn generate(kind: Kind, rng: &mut ChaCha8Rng) -> Generated {
             g.table = Table::open();
             // Mostly short lines; one in fifty as long as a full table's length (68 balls) and
             // beyond (a line of n takes about n^3 / 20 impacts: one of 80 costs as much as a
-            // thousand other scenes; tests/regressions.rs runs 60 and 120).
+            // thousand other scenes; scene/tests/regressions.rs runs 60 and 120).
             let n = if g.chance(0.02) {
                 g.rng.random_range(41..=80)
             } else {

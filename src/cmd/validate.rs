@@ -86,13 +86,13 @@ fn bar(len: usize) -> ProgressBar {
 }
 
 /// Runs the cross-check; returns the report.
-pub fn run(req: &Args, specs: &[SceneSpec]) -> Report {
+pub fn run(args: &Args, specs: &[SceneSpec]) -> Report {
     let pb = bar(specs.len());
     pb.set_prefix("cross-check");
     let mut runs = Vec::new();
     for s in specs {
         pb.set_message(s.name.clone());
-        runs.extend(crosscheck::check_scene(s, req.dt));
+        runs.extend(crosscheck::check_scene(s, args.dt));
         pb.inc(1);
     }
     pb.finish_and_clear();
@@ -111,13 +111,13 @@ pub fn run(req: &Args, specs: &[SceneSpec]) -> Report {
         .iter()
         .filter_map(|s| {
             pb.set_message(s.name.clone());
-            let n = nose::nose_rebound(s, req.dt);
+            let n = nose::nose_rebound(s, args.dt);
             pb.inc(1);
             n
         })
         .collect();
     pb.finish_and_clear();
-    let convergence = if req.convergence {
+    let convergence = if args.convergence {
         let pb = bar(specs.len() * STUDY_STEPS.len());
         pb.set_prefix("dt study");
         let rows = convergence::study(specs, &STUDY_STEPS, |r| {
@@ -130,7 +130,7 @@ pub fn run(req: &Args, specs: &[SceneSpec]) -> Report {
         Vec::new()
     };
     Report {
-        dt: req.dt,
+        dt: args.dt,
         runs,
         nose,
         convergence,
@@ -146,37 +146,39 @@ pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
 }
 
 /// Prints the report and writes the requested files.
-pub fn output(req: &Args, report: &Report) -> Result<(), BadInput> {
+pub fn output(args: &Args, report: &Report) -> Result<(), BadInput> {
     out!("{}", report::text(report));
-    if let Some(p) = &req.json {
+    if let Some(p) = &args.json {
         let text = serde_json::to_string_pretty(report)?;
         write(p, &(text + "\n"))?;
         outln!("JSON written to {}", p.display());
     }
-    if let Some(p) = &req.markdown {
+    if let Some(p) = &args.markdown {
         write(p, &report::markdown(report))?;
         outln!("Markdown written to {}", p.display());
     }
     Ok(())
 }
 
-/// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input.
-pub fn run_command(req: Args) -> std::process::ExitCode {
-    match execute(&req) {
+/// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input or
+/// an output that could not be written.
+pub fn run_command(args: Args) -> std::process::ExitCode {
+    match execute(&args) {
         Ok(true) => std::process::ExitCode::SUCCESS,
         Ok(false) => std::process::ExitCode::from(super::FAILED),
         Err(e) => super::bad_input(e),
     }
 }
 
-/// Checks the request, runs the cross-check and writes the outputs: `Ok(true)` when every
-/// verdict passed, `Ok(false)` when one failed, `Err` for bad input.
-pub fn execute(req: &Args) -> Result<bool, BadInput> {
-    if !(req.dt.is_finite() && req.dt > 0.0 && req.dt <= 1e-2) {
-        return Err(BadInput::Dt(req.dt));
+/// Checks the arguments, runs the cross-check and writes the outputs: `Ok(true)` when every
+/// verdict passed, `Ok(false)` when one failed, `Err` for bad input or an output that could
+/// not be written.
+pub fn execute(args: &Args) -> Result<bool, BadInput> {
+    if !(args.dt.is_finite() && args.dt > 0.0 && args.dt <= 1e-2) {
+        return Err(BadInput::Dt(args.dt));
     }
-    let specs = load_scenes(&req.scenes)?;
-    let report = run(req, &specs);
-    output(req, &report)?;
+    let specs = load_scenes(&args.scenes)?;
+    let report = run(args, &specs);
+    output(args, &report)?;
     Ok(report.pass())
 }

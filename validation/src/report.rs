@@ -689,7 +689,7 @@ exits non-zero when any run fails.
 What this cannot see: an error in a frictional impact smaller than what friction may explain
 (for example a wrong direction of the friction impulse) is within the by-design bound; the
 impact models are checked against the thesis's measurements and analytic limits elsewhere
-(`tests/impact_models.rs`). What it does see is shown by errors planted in our engine
+(`engine/tests/impact_models.rs`). What it does see is shown by errors planted in our engine
 (`validation/tests/crosscheck.rs`): a 2 % error in restitution or rolling resistance fails the
 whole-shot comparison; a 2 % error in rolling resistance from the first cushion impact on fails
 a stretch (the whole-shot tolerances after that impact are far too wide for it); a cushion

@@ -12,7 +12,7 @@
 //!   centre in plan, when its centre is r_j + R cos(theta) away (the engine's rule). With
 //!   r_c = r_j / cos(theta) a capsule's rounded end is exactly the jaw sphere at that end.
 //!
-//! [`CushionContact::Level`] instead puts the noses and jaws at the height of the ball's centre,
+//! [`ContactHeight::Level`] instead puts the noses and jaws at the height of the ball's centre,
 //! with the same plan contact distances, so that the contact normal is horizontal: on a rigid
 //! cloth and without friction this is the same impact (the nose's push through the centre plus
 //! the cloth's reaction is a horizontal impulse through the centre either way), and it keeps

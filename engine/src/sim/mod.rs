@@ -1,4 +1,4 @@
-//! The event loop.
+//! The event loop, and a ball's orientation along its track ([`orientation`]).
 //!
 //! Each ball is kept as a state at its own reference time plus the law it follows, and is
 //! evaluated on demand; an event only advances the balls it touches. After an event on balls S

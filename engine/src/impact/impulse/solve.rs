@@ -14,8 +14,8 @@ use crate::impact::dopri::Stop;
 
 /// Tolerance of the integration (scaled units): that of the slips near zero, the velocities'
 /// being 30 times larger (the step error measure, `impulse/measure.rs`). Results are within 1e-6
-/// of the converged solution over random impacts with frictions up to 0.3 (worst 5.5e-7 in
-/// 200,000; tests/impact_models.rs, docs/impact-convergence.md).
+/// of the converged solution over random impacts with frictions up to 0.3 (worst 6.2e-7 in
+/// 200,000; engine/tests/impact_models.rs, docs/impact-convergence.md).
 pub const TOLERANCE: f64 = 5e-10;
 /// A slip below this many integration tolerances (as a fraction of V) counts as zero: above
 /// the integration's noise and the chatter of a contact about to stick (so a nil slip never
