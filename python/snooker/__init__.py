@@ -17,6 +17,8 @@ could not simulate raises ``SimulationError``.
 from __future__ import annotations
 
 import json
+import math
+import numbers
 import os
 from typing import Any, Iterable, Optional, Sequence, Union
 
@@ -46,18 +48,17 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     """Reads and checks a scene.
 
     ``source`` is a path (``str`` or ``os.PathLike``) to a scene file, TOML text (a ``str``
-    containing a newline or ``=``), a dict with the scene file's keys, or a scene already
-    read. ``name`` names TOML text and dicts in error messages. Raises ``ValueError`` naming
+    containing a newline or ``=``), a dict with the scene file's keys (NumPy arrays and
+    numbers welcome as values), or a scene already read. ``name`` names TOML text and dicts in error messages. Raises ``ValueError`` naming
     the file, key and reason.
     """
     if isinstance(source, _snooker.Scene):
         return source
     if isinstance(source, dict):
-        try:
-            text = json.dumps(source, allow_nan=False)
-        except (TypeError, ValueError) as e:
-            raise ValueError(f"{name}: not a scene: {e}") from None
-        return _snooker.parse_json(text, name)
+        bad = _not_json(source, "")
+        if bad is not None:
+            raise ValueError(f"{name}: {bad}")
+        return _snooker.parse_json(json.dumps(source, allow_nan=False, default=_plain), name)
     if isinstance(source, os.PathLike):
         return _snooker.load(os.fspath(source))
     if isinstance(source, str):
@@ -67,6 +68,44 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     raise ValueError(
         f"{name}: a scene is a path, TOML text or a dict, not {type(source).__name__}"
     )
+
+
+def _not_json(value: object, key: str) -> Optional[str]:
+    """Why ``value`` (at ``key``) cannot be a scene's JSON, in the scene parser's words, or None."""
+    at = f"key `{key}`: " if key else ""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            if not isinstance(k, str):
+                return f"{at}not a scene: keys are strings, not {type(k).__name__}"
+            bad = _not_json(v, f"{key}.{k}" if key else k)
+            if bad is not None:
+                return bad
+        return None
+    if isinstance(value, (list, tuple, np.ndarray)):
+        for i, v in enumerate(value):
+            # An array's element is reported at the array's key, as the parser does.
+            inner = f"{key}[{i}]" if isinstance(v, (dict, list, tuple, np.ndarray)) else key
+            bad = _not_json(v, inner)
+            if bad is not None:
+                return bad
+        return None
+    if isinstance(value, numbers.Real) and not math.isfinite(value):
+        shown = "NaN" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+        return f"{at}must be a finite number, got {shown}"
+    if value is None or isinstance(value, (str, bool, numbers.Real)):
+        return None
+    return f"{at}not a scene: {type(value).__name__} is not a number, string, list or table"
+
+
+def _plain(value: object) -> object:
+    """NumPy arrays and scalars as the JSON numbers and lists they hold (``json.dumps``)."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        return float(value)
+    raise TypeError(f"{type(value).__name__} is not a number, string, list or table")
 
 
 class Shot:

@@ -49,6 +49,20 @@ def test_many_at_once_equal_one_by_one_on_any_thread_count():
         assert got == one_by_one, threads
 
 
+def test_numpy_values_in_a_dict_scene_are_the_numbers_they_hold():
+    as_numpy = {
+        "name": "two-balls",
+        "balls": [
+            {"id": "cue", "pos": np.array([1.0, 0.8])},
+            {"id": "red", "pos": np.array([2.0, 0.9])},
+        ],
+        "cue": {"ball": "cue", "speed": np.float64(2.0), "aim": np.float64(0.1)},
+        "sim": {"max_events": np.int64(100000)},
+    }
+    want = snooker.simulate({**TWO_BALLS, "sim": {"max_events": 100000}}).result
+    assert snooker.simulate(as_numpy).result == want
+
+
 def test_positions_follow_the_exact_trajectory():
     shot = snooker.simulate(TWO_BALLS)
     times = np.linspace(0.0, shot.duration, 50)
@@ -73,7 +87,9 @@ def test_bad_scenes_raise_value_errors_with_the_cli_messages(tmp_path):
     assert str(e.value) == out.stderr.strip().removeprefix("error: ")
     for scene, says in [
         ({"balls": [{"id": "a", "pos": [0.5, 0.5]}], "unknown": 1}, "unknown"),
-        ({"balls": [{"id": "a", "pos": [0.5, math.nan]}]}, "not a scene"),
+        ({"balls": [{"id": "a", "pos": [0.5, math.nan]}]}, r"key `balls\[0\]\.pos`: must be a finite number, got NaN"),
+        ({"params": {"mu_slide": np.float64(np.inf)}, "balls": [{"id": "a", "pos": [0.5, 0.5]}]}, r"key `params\.mu_slide`: must be a finite number, got inf"),
+        ({"balls": [{"id": "a", "pos": [0.5, 0.5], "vel": {1, 2, 3}}]}, r"key `balls\[0\]\.vel`: not a scene: set"),
         ({"balls": []}, "no balls"),
         (str(tmp_path / "missing.toml"), "cannot read"),
         (42, "not int"),
