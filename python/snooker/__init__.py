@@ -49,8 +49,8 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
 
     ``source`` is a path (``str`` or ``os.PathLike``) to a scene file, TOML text (a ``str``
     containing a newline or ``=``), a dict with the scene file's keys (NumPy arrays and
-    numbers welcome as values), or a scene already read. ``name`` names TOML text and dicts in error messages. Raises ``ValueError`` naming
-    the file, key and reason.
+    numbers welcome as values), or a scene already read. ``name`` names TOML text and dicts
+    in error messages. Raises ``ValueError`` naming the file, key and reason.
     """
     if isinstance(source, _snooker.Scene):
         return source

@@ -87,9 +87,18 @@ def test_bad_scenes_raise_value_errors_with_the_cli_messages(tmp_path):
     assert str(e.value) == out.stderr.strip().removeprefix("error: ")
     for scene, says in [
         ({"balls": [{"id": "a", "pos": [0.5, 0.5]}], "unknown": 1}, "unknown"),
-        ({"balls": [{"id": "a", "pos": [0.5, math.nan]}]}, r"key `balls\[0\]\.pos`: must be a finite number, got NaN"),
-        ({"params": {"mu_slide": np.float64(np.inf)}, "balls": [{"id": "a", "pos": [0.5, 0.5]}]}, r"key `params\.mu_slide`: must be a finite number, got inf"),
-        ({"balls": [{"id": "a", "pos": [0.5, 0.5], "vel": {1, 2, 3}}]}, r"key `balls\[0\]\.vel`: not a scene: set"),
+        (
+            {"balls": [{"id": "a", "pos": [0.5, math.nan]}]},
+            r"key `balls\[0\]\.pos`: must be a finite number, got NaN",
+        ),
+        (
+            {"params": {"mu_slide": np.float64(np.inf)}, "balls": [{"id": "a", "pos": [0.5, 0.5]}]},
+            r"key `params\.mu_slide`: must be a finite number, got inf",
+        ),
+        (
+            {"balls": [{"id": "a", "pos": [0.5, 0.5], "vel": {1, 2, 3}}]},
+            r"key `balls\[0\]\.vel`: not a scene: set",
+        ),
         ({"balls": []}, "no balls"),
         (str(tmp_path / "missing.toml"), "cannot read"),
         (42, "not int"),
