@@ -11,6 +11,7 @@ use crate::impact::MIN_SEPARATION;
 use crate::motion::cloth::SEGMENT;
 use crate::params::Params;
 use crate::sim::{Ending, EventKind, Setup, Shot};
+use crate::table::Table;
 use std::cmp::Ordering;
 
 /// Largest overlap of two balls in play the engine promises at any instant, m (1 µm).
@@ -25,12 +26,60 @@ pub struct Sweep {
     pub max_overlap: f64,
     /// Where it happened: time and the two ids.
     pub worst: Option<(f64, String, String)>,
-    /// First time a ball in play was off the table, with its id.
-    pub escaped: Option<(f64, String)>,
+    /// First time a ball in play was off the table, with its id and plan position.
+    pub escaped: Option<(f64, String, [f64; 2])>,
     /// First time a state was not finite, with the ball's id.
     pub non_finite: Option<(f64, String)>,
     /// Samples taken.
     pub samples: usize,
+}
+
+/// Slack of the position checks beyond the contact distances, m.
+pub const POSITION_TOL: f64 = 1e-6;
+
+/// Whether ball state `s` (in play) is where a ball in play can be: its centre on the playing
+/// area or in a pocket's opening ([`Table::holds`]), no nearer a nose line than the nose edge
+/// allows at its height — R cos theta on the cloth, R from the edge in the air, up to the
+/// nose line itself for a ball whose lowest point is above the nose (one that crosses the
+/// line leaves play by its own event, `ball_off_table`).
+pub fn on_table(table: &Table, p: &Params, s: &BallState) -> bool {
+    let r = p.ball_radius;
+    let rise = p.cushion_height - s.pos.z;
+    let reach = if s.pos.z < p.cushion_height + r {
+        (r * r - rise * rise).max(0.0).sqrt()
+    } else {
+        0.0
+    };
+    table.holds(s.pos, reach, POSITION_TOL)
+}
+
+/// Every ball in play that is not on the table ([`on_table`]) just after an event or at the
+/// end of `shot` (played on `table`): a ball that left the cloth without an event. Cheap (the
+/// states at the events only); [`audit`] also samples between them.
+pub fn positions(table: &Table, shot: &Shot) -> Vec<Violation> {
+    let p = &shot.params;
+    let mut out = Vec::new();
+    for e in &shot.events {
+        for (&b, s) in e.balls.iter().zip(&e.after) {
+            if s.motion.in_play() && s.is_finite() && !on_table(table, p, s) {
+                out.push(Violation::OffTable {
+                    t: e.t,
+                    ball: shot.tracks[b].id.clone(),
+                    pos: [s.pos.x, s.pos.y],
+                });
+            }
+        }
+    }
+    for (tr, s) in shot.tracks.iter().zip(shot.final_states()) {
+        if s.motion.in_play() && s.is_finite() && !on_table(table, p, &s) {
+            out.push(Violation::OffTable {
+                t: shot.duration,
+                ball: tr.id.clone(),
+                pos: [s.pos.x, s.pos.y],
+            });
+        }
+    }
+    out
 }
 
 /// Samples every ball of `shot` every `dt` seconds and just before and after every event,
@@ -38,13 +87,6 @@ pub struct Sweep {
 pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
     let p = &shot.params;
     let r = p.ball_radius;
-    // How near (plan) a ball's centre may come to a nose line at height z: the nose edge, at
-    // the cushion's height, is then R from it (on the cloth, R cos theta); a ball whose lowest
-    // point is above the nose can fly over it, and leaves play by its own event.
-    let reach = |z: f64| {
-        let rise = p.cushion_height - z;
-        (z < p.cushion_height + r).then(|| (r * r - rise * rise).max(0.0).sqrt())
-    };
     let mut times: Vec<f64> = Vec::new();
     let n = (shot.duration / dt).ceil() as usize;
     times.extend((0..=n).map(|k| (k as f64 * dt).min(shot.duration)));
@@ -67,9 +109,8 @@ pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
             if out.non_finite.is_none() && !a.is_finite() {
                 out.non_finite = Some((t, shot.tracks[i].id.clone()));
             }
-            let on_table = reach(a.pos.z).is_none_or(|c| setup.table.holds(a.pos, c, 1e-6));
-            if out.escaped.is_none() && !on_table {
-                out.escaped = Some((t, shot.tracks[i].id.clone()));
+            if out.escaped.is_none() && !on_table(&setup.table, p, a) {
+                out.escaped = Some((t, shot.tracks[i].id.clone(), [a.pos.x, a.pos.y]));
             }
             for (j, b) in states.iter().enumerate().skip(i + 1) {
                 if !b.motion.in_play() {
@@ -191,12 +232,14 @@ pub enum Violation {
         /// The two balls.
         balls: (String, String),
     },
-    /// A ball in play off the table.
+    /// A ball in play off the table (it left the cloth without an event).
     OffTable {
         /// When, s.
         t: f64,
         /// Which ball.
         ball: String,
+        /// Where (plan), m.
+        pos: [f64; 2],
     },
     /// A shot that ended at rest with a ball still moving.
     StillMoving {
@@ -219,7 +262,11 @@ impl std::fmt::Display for Violation {
                 "balls {} and {} overlap by {depth:.3e} m at t = {t}",
                 balls.0, balls.1
             ),
-            Violation::OffTable { t, ball } => write!(f, "ball {ball} left the table at t = {t}"),
+            Violation::OffTable { t, ball, pos } => write!(
+                f,
+                "ball {ball} is off the table at t = {t}, at ({:.4}, {:.4}) m, still in play",
+                pos[0], pos[1]
+            ),
             Violation::StillMoving { ball, motion } => {
                 write!(f, "ball {ball} did not stop ({})", motion.name())
             }
@@ -341,11 +388,12 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
     out
 }
 
-/// Every invariant `shot` (simulated from `setup`) breaks: [`events`], and on a grid of
-/// instants [`SAMPLE_INTERVAL`] apart and just around every event, overlaps deeper than
-/// [`MAX_OVERLAP`], balls off the table and non-finite states.
+/// Every invariant `shot` (simulated from `setup`) breaks: [`events`], [`positions`], and on
+/// a grid of instants [`SAMPLE_INTERVAL`] apart and just around every event, overlaps deeper
+/// than [`MAX_OVERLAP`], balls off the table and non-finite states.
 pub fn audit(setup: &Setup, shot: &Shot) -> Vec<Violation> {
     let mut out = events(shot, MAX_OVERLAP);
+    out.extend(positions(&setup.table, shot));
     let sweep = sweep(setup, shot, SAMPLE_INTERVAL);
     if let Some((t, ball)) = sweep.non_finite {
         out.push(Violation::NonFinite { t, ball });
@@ -359,8 +407,8 @@ pub fn audit(setup: &Setup, shot: &Shot) -> Vec<Violation> {
             balls: (a, b),
         });
     }
-    if let Some((t, ball)) = sweep.escaped {
-        out.push(Violation::OffTable { t, ball });
+    if let Some((t, ball, pos)) = sweep.escaped {
+        out.push(Violation::OffTable { t, ball, pos });
     }
     out
 }

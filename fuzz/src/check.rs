@@ -182,7 +182,8 @@ fn check_inner(g: &Generated) -> SceneCheck {
             return verdict(SceneEnding::AtRest, Some(why), 0);
         }
     };
-    let broken = audit::events(&shot, MAX_OVERLAP);
+    let mut broken = audit::events(&shot, MAX_OVERLAP);
+    broken.extend(audit::positions(&scene.setup.table, &shot));
     verdict(
         SceneEnding::AtRest,
         audit::report(&broken[..broken.len().min(5)]),

@@ -41,6 +41,10 @@ struct Args {
     /// Run scene K alone and print its file.
     #[arg(long, value_name = "K")]
     only: Option<u64>,
+    /// Also write each scene's digest to this file, one `K DIGEST` line per scene: two runs'
+    /// files show which scenes a change touched.
+    #[arg(long, value_name = "FILE")]
+    digests: Option<PathBuf>,
 }
 
 /// Scene `k` of run `seed`: its own generator, so any scene can be rerun alone.
@@ -127,6 +131,15 @@ fn main() -> ExitCode {
         .iter()
         .fold(0u64, |h, r| h.rotate_left(5) ^ r.2.digest);
     println!("digest of the results: {digest:016x}");
+    if let Some(path) = &args.digests {
+        let lines: String = results
+            .iter()
+            .map(|r| format!("{} {:016x}\n", r.0, r.2.digest))
+            .collect();
+        if let Err(e) = std::fs::write(path, lines) {
+            eprintln!("error: cannot write {}: {e}", path.display());
+        }
+    }
     println!(
         "time in scenes {total:.1} s (mean {:.2} ms); slowest: {}",
         1e3 * total / (end - first).max(1) as f64,

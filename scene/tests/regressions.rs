@@ -1,6 +1,7 @@
-//! Every failure class a fuzz run of random valid scenes found (issue 11), as a named test with
-//! its minimal scene: each must simulate, keep every invariant (`snooker_engine::audit`) and
-//! do what the physics says.
+//! Every failure class a fuzz run of random valid scenes found (issues 11 and 21), as a named
+//! test with its minimal scene: each must simulate, keep every invariant
+//! (`snooker_engine::audit`: the events' and every ball's position) and do what the physics
+//! says.
 
 use snooker_engine::audit::{self, MAX_OVERLAP, energy_allowance};
 use snooker_engine::impact::MIN_SEPARATION;
@@ -10,7 +11,8 @@ use snooker_scene::{Scene, parse};
 fn run(text: &str) -> (Scene, Shot) {
     let scene = parse(text, "regression.toml").unwrap_or_else(|e| panic!("{e}"));
     let shot = simulate(&scene.setup, &scene.options).unwrap_or_else(|e| panic!("{e}"));
-    let broken = audit::events(&shot, MAX_OVERLAP);
+    let mut broken = audit::events(&shot, MAX_OVERLAP);
+    broken.extend(audit::positions(&scene.setup.table, &shot));
     assert!(broken.is_empty(), "{broken:?}");
     assert_eq!(shot.ending, Ending::AtRest);
     (scene, shot)
@@ -31,6 +33,30 @@ fn a_ball_flying_over_the_cushion_leaves_the_table() {
     // It crosses the nose line with its lowest point above the nose.
     assert!(s.pos.z - shot.params.ball_radius >= shot.params.cushion_height - 1e-9);
     assert_eq!(shot.final_states()[0].motion, Motion::OffTable);
+}
+
+#[test]
+fn a_ball_in_the_air_over_a_pocket_opening_leaves_by_an_event() {
+    // Found (issue 21, an independent generator): the cue ball, struck up at 15 m/s, crossed
+    // the middle pocket's mouth high in the air, passed over the jaw's rounded edge (where no
+    // nose line is crossed), missed the fall and landed far beyond the table: "3 events (all
+    // balls at rest)", at rest at (722.8, -710.3). Over the jaw with its lowest point above the
+    // nose it leaves the table there.
+    let (scene, shot) = run(r#"
+        name = "airborne-misses-the-cushion"
+        params = {cue_endmass = 0.018386861239693388}
+        cue = {ball = "cue", speed = 15.0, aim = -0.9562508058533015,
+               offset = [-0.013823902574606806, 0.012355188099124437],
+               elevation = 0.6151174449674717}
+        balls = [{id = "cue", pos = [1.3913722885552482, 0.5424020614052881],
+                  vel = [2.522879281432158, -0.05495701863481539, 1.803093559774154]}]
+    "#);
+    let off = &shot.events[0];
+    assert_eq!(off.kind, EventKind::BallOffTable, "{:?}", shot.events);
+    assert_eq!(off.feature.as_deref(), Some("middle-right/right-top jaw"));
+    assert_eq!(shot.final_states()[0].motion, Motion::OffTable);
+    // Sampled every 0.5 ms too: never off the table while in play.
+    assert!(audit::audit(&scene.setup, &shot).is_empty());
 }
 
 #[test]

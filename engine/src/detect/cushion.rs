@@ -21,6 +21,14 @@ pub struct NoseEdge {
     pub radius: f64,
 }
 
+impl NoseEdge {
+    /// Whether a ball centred at height `z` has its lowest point at or above the nose (within
+    /// the detection's tolerance): it clears a cushion's nose, a jaw and a pocket's back.
+    pub fn cleared_at(&self, z: f64) -> bool {
+        z - self.radius >= self.height - VERIFY_TOL
+    }
+}
+
 /// True when the plan point `at` lies along `cushion` (within its length).
 fn along(cushion: &Cushion, at: crate::ball::Vec3) -> bool {
     let s = (at - cushion.start).dot(&cushion.direction());
@@ -55,8 +63,7 @@ pub fn nose_time_in_air(
 /// cushion and leaves the table.
 pub fn over_time(path: &Path, cushion: &Cushion, edge: NoseEdge, window: f64) -> Option<f64> {
     let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, 0.0, window)?;
-    let clear = path.at(t).z - edge.radius >= edge.height - VERIFY_TOL;
-    (clear && along(cushion, at)).then_some(t)
+    (edge.cleared_at(path.at(t).z) && along(cushion, at)).then_some(t)
 }
 
 /// First time in [0, window] at which a ball in the air on `path` touches the rounded edge of
@@ -73,6 +80,22 @@ pub fn jaw_time_in_air(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> O
         point.c -= jaw.centre + crate::ball::Vec3::new(0.0, 0.0, edge.height);
         first_entry(&point, edge.radius, window)
     }
+}
+
+/// First time in [0, window] at which a ball in the air on `path` passes over the rounded
+/// edge of `jaw` with its lowest point above the nose: its centre enters the jaw's arc in
+/// plan (the cushion's body, behind the nose and the facing the arc joins) and it clears the
+/// cushion there, leaving the table. A ball entering it lower has touched the edge before.
+/// A sharp jaw (radius 0) is the meeting point of the nose and the facing, which
+/// [`over_time`] covers.
+pub fn over_jaw_time(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> Option<f64> {
+    if jaw.radius <= 0.0 {
+        return None;
+    }
+    let mut rel = path.plan();
+    rel.c -= jaw.centre;
+    let t = first_entry(&rel, jaw.radius, window)?;
+    edge.cleared_at(path.at(t).z).then_some(t)
 }
 
 /// First time in [0, window] at which `path` touches the straight `cushion` within its

@@ -58,6 +58,32 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
         }))
 }
 
+/// Every time in [0, window], in order, at which the relative path `rel` leaves the sphere of
+/// radius `rho` around the origin (moving away from it): the crossings [`entries`] leaves out.
+pub fn exits(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
+    let (a, b, c) = (rel.a, rel.b, rel.c);
+    let searched = !(window.is_nan()
+        || window <= 0.0
+        || rho - c.norm() > rel.reach(window)
+        || never_within(rel, rho, window.min(MAX_WINDOW)));
+    let roots = if searched {
+        let quartic = Poly::new([
+            c.dot(&c) - rho * rho,
+            2.0 * b.dot(&c),
+            b.dot(&b) + 2.0 * a.dot(&c),
+            2.0 * a.dot(&b),
+            a.dot(&a),
+        ]);
+        quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+    } else {
+        Default::default()
+    };
+    roots.into_iter().filter(move |&t| {
+        let d = rel.at(t);
+        d.dot(&rel.velocity(t)) > 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+    })
+}
+
 /// True when the path `rel` provably stays farther than `rho` from the origin over [0, `window`]
 /// by more than any root could be off ([`VERIFY_TOL`]) and any rounding in the bound: no root
 /// could be accepted there, so the search is skipped and nothing else changes.
