@@ -206,6 +206,11 @@ pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
             offset: c.offset.0,
             elevation: c.elevation,
         };
+        // The ball's own motion is checked first: a strike cannot make a bad start good, and
+        // the cue is not to blame for it.
+        if let Some((field, reason)) = snooker_engine::sim::setup::motion_error(&balls[i], r) {
+            return Err(fail(&format!("{}.{field}", keys[i]), reason));
+        }
         let before = balls[i].state;
         let s = balls[i]
             .strike(&cue, &params)

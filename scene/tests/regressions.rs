@@ -60,6 +60,24 @@ fn a_ball_in_the_air_over_a_pocket_opening_leaves_by_an_event() {
 }
 
 #[test]
+fn a_steep_cue_with_a_large_height_offset_is_a_massé_not_a_miss() {
+    // Found (issue 21): at elevation 1.2 rad a height offset of 40 mm is an axis 14.5 mm from
+    // the centre, a valid strike; a per-coordinate limit of R + r refused it, saying "the
+    // cue's axis passes 40.0 mm from the ball's centre and misses it (limit 36.2 mm)".
+    let (scene, shot) = run(r#"
+        cue = {ball = "cue", speed = 3.0, aim = 0.0, offset = [0.0, 0.04], elevation = 1.2}
+        balls = [{id = "cue", pos = [1.0, 0.9]}]
+    "#);
+    let strike = scene.strike.expect("struck");
+    assert!(strike.strike.contact_offset < 0.5 * scene.setup.params.ball_radius);
+    assert!(
+        shot.final_states()[0].pos.x > 1.0,
+        "{:?}",
+        shot.final_states()
+    );
+}
+
+#[test]
 fn a_fast_ball_in_the_air_meets_the_cushion_edge() {
     // Found: the yellow, struck at 15 m/s, reaches a cushion in the air at 19.9 m/s, its
     // restitution falling to 0 (e_cushion_falloff): "the bodies are not approaching".
