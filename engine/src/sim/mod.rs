@@ -489,6 +489,10 @@ impl Sim<'_> {
                         .map_err(|err| self.impact_error(&[e.a, other], err))?
                 };
                 separation::separate_balls(&mut a2, &mut b2, n);
+                if approach <= separation::RESTING_APPROACH {
+                    separation::stay_on_cloth(&mut a2, &a, &p);
+                    separation::stay_on_cloth(&mut b2, &b, &p);
+                }
                 Resolved {
                     kind: EventKind::BallBall,
                     balls: vec![e.a, other],
