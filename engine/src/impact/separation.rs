@@ -9,8 +9,9 @@
 //! at exactly that speed. A sustained contact thus becomes a steady train of micro-collisions
 //! whose impulses average to the contact force, the bodies never more than a few micrometres
 //! apart. The price is bounded: the push adds 1/2 m_eff (MIN_SEPARATION^2 - s^2) to an impact
-//! that left the bodies separating at s >= 0, at most 1/2 m_eff MIN_SEPARATION^2 — 3.5e-8 J
-//! for two balls (m_eff = M/2), 7.0e-8 J for a ball against a cushion (m_eff = M) — which the
+//! that left the bodies separating at s >= 0, at most 1/2 m_eff MIN_SEPARATION^2 — for the
+//! thesis's ball mass, 3.5e-8 J for two balls (m_eff = M/2), 7.0e-8 J for a ball against a
+//! cushion (m_eff = M); it scales with the mass of a scene's balls — which the
 //! cloth's friction then removes. The impact itself is solved with the model's own
 //! restitution, so its energy balance is the model's.
 
