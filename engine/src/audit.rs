@@ -7,8 +7,8 @@
 //! (cheap), [`audit`] also on a fine grid of instants.
 
 use crate::ball::{BallState, Motion};
-use crate::impact::MIN_SEPARATION;
 use crate::impact::impulse::TOLERANCE;
+use crate::impact::separation::{MIN_SEPARATION, RESTING_APPROACH};
 use crate::motion::cloth::SEGMENT;
 use crate::params::Params;
 use crate::sim::{Ending, Event, EventKind, Setup, Shot};
@@ -273,6 +273,25 @@ pub enum Violation {
         /// Where (plan), m.
         pos: [f64; 2],
     },
+    /// A resting contact's micro-collision lifted a ball off the cloth.
+    MicroCollisionLift {
+        /// Which ball.
+        ball: String,
+        /// When, s.
+        t: f64,
+    },
+    /// A pair parted by a micro-collision met again sooner than the cloth's accelerations
+    /// allow ([`resting_contacts`]).
+    Chatter {
+        /// The two balls.
+        balls: (String, String),
+        /// When they met again, s.
+        t: f64,
+        /// After how long, s.
+        gap: f64,
+        /// The least time the bound allows, s.
+        least: f64,
+    },
     /// A shot that ended at rest with a ball still moving.
     StillMoving {
         /// Which ball.
@@ -298,6 +317,21 @@ impl std::fmt::Display for Violation {
                 f,
                 "ball {ball} is off the table at t = {t}, at ({:.4}, {:.4}) m, still in play",
                 pos[0], pos[1]
+            ),
+            Violation::MicroCollisionLift { ball, t } => write!(
+                f,
+                "a micro-collision lifted ball {ball} off the cloth at t = {t}"
+            ),
+            Violation::Chatter {
+                balls,
+                t,
+                gap,
+                least,
+            } => write!(
+                f,
+                "balls {} and {} met again {gap:.3e} s after a micro-collision, at t = {t} \
+                 (the cloth's accelerations allow no less than {least:.3e} s)",
+                balls.0, balls.1
             ),
             Violation::StillMoving { ball, motion } => {
                 write!(f, "ball {ball} did not stop ({})", motion.name())
@@ -325,9 +359,76 @@ pub fn report(violations: &[Violation]) -> Option<String> {
     (!texts.is_empty()).then(|| texts.join("; "))
 }
 
+/// The largest relative acceleration two balls on the cloth can have under `p`, m/s^2: twice
+/// the largest acceleration of any law on the cloth, the largest friction (mu_slide,
+/// mu_slide_low or mu_roll) times g, plus g |tilt| and |nap|.
+pub fn largest_relative_acceleration(p: &Params) -> f64 {
+    let friction = p.mu_slide.max(p.mu_slide_low).max(p.mu_roll);
+    2.0 * (friction * p.g + p.g * p.tilt() + p.nap_drift.abs())
+}
+
+/// The resting contacts' invariants ([`crate::impact::separation`]): a micro-collision (an
+/// approach of at most [`RESTING_APPROACH`]) lifts no ball off the cloth, and a pair of balls
+/// on the cloth that it leaves parting at [`MIN_SEPARATION`] meets again no sooner than
+/// 2 MIN_SEPARATION over their largest relative acceleration
+/// ([`largest_relative_acceleration`]) unless something else touches one of them first: at
+/// most that acceleration / (2 MIN_SEPARATION) micro-collisions per pair per second.
+pub fn resting_contacts(shot: &Shot) -> Vec<Violation> {
+    let p = &shot.params;
+    let least_gap = 2.0 * MIN_SEPARATION / largest_relative_acceleration(p);
+    let mut out = Vec::new();
+    // Pairs whose last impact was a micro-collision leaving both on the cloth: (i, j, time).
+    let mut parted: Vec<(usize, usize, f64)> = Vec::new();
+    for e in &shot.events {
+        let pair = (e.kind == EventKind::BallBall && e.balls.len() == 2)
+            .then(|| (e.balls[0].min(e.balls[1]), e.balls[0].max(e.balls[1])));
+        if let Some((i, j)) = pair
+            && let Some(&(_, _, t0)) = parted.iter().find(|q| (q.0, q.1) == (i, j))
+            && e.t - t0 < least_gap * (1.0 - 1e-6)
+        {
+            out.push(Violation::Chatter {
+                balls: (shot.tracks[i].id.clone(), shot.tracks[j].id.clone()),
+                t: e.t,
+                gap: e.t - t0,
+                least: least_gap,
+            });
+        }
+        // An impact, a pot or a departure changes a ball's course: its pairs start afresh.
+        let touches = matches!(
+            e.kind,
+            EventKind::BallBall
+                | EventKind::BallCushion
+                | EventKind::BallPocket
+                | EventKind::BallOffTable
+        );
+        if touches {
+            parted.retain(|q| !e.balls.contains(&q.0) && !e.balls.contains(&q.1));
+        }
+        let Some((i, j)) = pair else {
+            continue;
+        };
+        if e.normal_speed.is_none_or(|v| v > RESTING_APPROACH) {
+            continue;
+        }
+        for ((&b, before), after) in e.balls.iter().zip(&e.before).zip(&e.after) {
+            if before.motion != Motion::Airborne && after.motion == Motion::Airborne {
+                out.push(Violation::MicroCollisionLift {
+                    ball: shot.tracks[b].id.clone(),
+                    t: e.t,
+                });
+            }
+        }
+        if e.after.iter().all(|s| s.motion != Motion::Airborne) {
+            parted.push((i, j, e.t));
+        }
+    }
+    out
+}
+
 /// Every invariant `shot` breaks at its events: their order, finite states, overlaps deeper
 /// than `max_overlap` between any two balls in play just after each event, the energy at and
-/// between events, and, for a shot that ended at rest, every ball stopped.
+/// between events, the resting contacts' ([`resting_contacts`]), and, for a shot that ended at
+/// rest, every ball stopped.
 pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
     let p = &shot.params;
     let r = p.ball_radius;
@@ -405,6 +506,7 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
         }
         k = end;
     }
+    out.extend(resting_contacts(shot));
     if shot.ending == Ending::AtRest {
         for (tr, s) in shot.tracks.iter().zip(shot.final_states()) {
             // A ball spinning in place with no sidespin decay spins for ever: the shot is over.
