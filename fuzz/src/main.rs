@@ -151,7 +151,7 @@ fn main() -> ExitCode {
             .join(", ")
     );
     println!(
-        "{:<14} {:<26} {:>9} {:>9}",
+        "{:<16} {:<26} {:>9} {:>9}",
         "kind", "ending", "physical", "other"
     );
     for kind in Kind::ALL {
@@ -178,13 +178,40 @@ fn main() -> ExitCode {
         for e in endings {
             let n = |phys| table.get(&(kind, e, phys)).copied().unwrap_or(0);
             println!(
-                "{:<14} {:<26} {:>9} {:>9}",
+                "{:<16} {:<26} {:>9} {:>9}",
                 kind.name(),
                 e.name(),
                 n(true),
                 n(false)
             );
         }
+    }
+    // Coverage: how many scenes of each kind reached each event kind and class.
+    let mut coverage: BTreeMap<Kind, (u64, [u64; check::FEATURES.len()])> = BTreeMap::new();
+    for (_, kind, v, _, _) in &results {
+        let row = coverage
+            .entry(*kind)
+            .or_insert((0, [0; check::FEATURES.len()]));
+        row.0 += 1;
+        for (k, n) in row.1.iter_mut().enumerate() {
+            *n += u64::from(v.reached >> k & 1);
+        }
+    }
+    println!("coverage: scenes of each kind that reached each event kind and class");
+    let mut header = format!("{:<16} {:>7}", "kind", "scenes");
+    for f in check::FEATURES {
+        let _ = write!(header, " {f:>w$}", w = f.len().max(6));
+    }
+    println!("{header}");
+    for kind in Kind::ALL {
+        let Some((n, counts)) = coverage.get(&kind) else {
+            continue;
+        };
+        let mut line = format!("{:<16} {n:>7}", kind.name());
+        for (f, c) in check::FEATURES.iter().zip(counts) {
+            let _ = write!(line, " {c:>w$}", w = f.len().max(6));
+        }
+        println!("{line}");
     }
     // Why the cloth was not a physical one, for the shots that did not stop.
     let mut why: BTreeMap<(check::SceneEnding, &str), u64> = BTreeMap::new();
