@@ -84,8 +84,14 @@ impl Bounds {
     }
 
     /// `self` with the intervals of `spec` ("speed=0.3..6,elevation=0..0,side=-0.01..0.01,
-    /// height=..."), each checked against the engine's strike limits.
+    /// height=..."), each checked against the engine's strike limits: the cue's speed and
+    /// elevation ranges, and offsets at which the cue's axis passes within the miscue limit of
+    /// the centre (`cue.rs`: the contact lies miscue_limit R from the axis when the axis
+    /// passes miscue_limit (R + r) from the centre; a height offset is foreshortened by
+    /// cos(elevation), so a steeper cue allows a larger one).
     pub fn with_spec(mut self, spec: &str, p: &Params) -> Result<Bounds, PlanError> {
+        // Offsets are checked once the elevations are known, whatever the order given.
+        let mut offsets: Vec<(String, &str, Interval)> = Vec::new();
         for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
             let key = format!("--bounds {part}");
             let (name, range) = part
@@ -108,12 +114,17 @@ impl Bounds {
             if iv.lo > iv.hi {
                 return Err(bad(&key, "the low end is above the high end"));
             }
-            let reach = p.miscue_limit * p.ball_radius;
             let (slot, allowed, unit) = match name.trim() {
                 "speed" => (&mut self.speed, (1e-3, MAX_CUE_SPEED), "m/s"),
                 "elevation" => (&mut self.elevation, (0.0, MAX_ELEVATION), "rad"),
-                "side" => (&mut self.side, (-reach, reach), "m"),
-                "height" => (&mut self.height, (-reach, reach), "m"),
+                "side" => {
+                    offsets.push((key, "side", iv));
+                    continue;
+                }
+                "height" => {
+                    offsets.push((key, "height", iv));
+                    continue;
+                }
                 other => {
                     return Err(bad(
                         &key,
@@ -127,6 +138,28 @@ impl Bounds {
                     format!(
                         "outside the engine's strike limits [{}, {}] {unit}",
                         allowed.0, allowed.1
+                    ),
+                ));
+            }
+            *slot = iv;
+        }
+        let reach = p.miscue_limit * (p.ball_radius + p.cue_tip_radius);
+        for (key, name, iv) in offsets {
+            let (limit, slot) = if name == "side" {
+                (reach, &mut self.side)
+            } else {
+                (reach / self.elevation.hi.cos(), &mut self.height)
+            };
+            if iv.lo < -limit || iv.hi > limit {
+                return Err(bad(
+                    &key,
+                    format!(
+                        "outside the engine's strike limits [{:.4}, {limit:.4}] m: beyond, the \
+                         cue's axis passes more than miscue_limit (R + r) = {:.1} mm from the \
+                         centre at every elevation up to {:.4} rad, a miscue",
+                        -limit,
+                        reach * 1e3,
+                        self.elevation.hi
                     ),
                 ));
             }
@@ -361,5 +394,39 @@ impl Problem {
 
     pub(crate) fn count_shot(&self) {
         self.shots.fetch_add(1, Ordering::Relaxed);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use snooker_engine::BallState;
+    use snooker_engine::cue::{self, Cue};
+
+    #[test]
+    fn offset_bounds_are_the_engines_at_the_elevations_allowed() {
+        let p = Params::default();
+        let bounds = |spec: &str| Bounds::default_for(&p).with_spec(spec, &p);
+        // A level cue: the axis within miscue_limit (R + r) = 18.1 mm of the centre.
+        assert!(bounds("side=-0.018..0.018,height=-0.018..0.018").is_ok());
+        let e = bounds("height=0.0..0.019").unwrap_err().to_string();
+        assert!(e.contains("18.1 mm"), "{e}");
+        // Issue 21's massé, a 40 mm height offset at 1.2 rad, is within them; given in either
+        // order.
+        assert!(bounds("elevation=0..1.2,height=0..0.04").is_ok());
+        assert!(bounds("height=0..0.04,elevation=0..1.2").is_ok());
+        assert!(bounds("elevation=0..1.2,height=0..0.051").is_err());
+        // The limits say what the engine does: just inside, a strike; just beyond, a miscue.
+        let ball = BallState::at_rest(1.0, 0.9, p.ball_radius);
+        let limit = p.miscue_limit * (p.ball_radius + p.cue_tip_radius) / 1.2f64.cos();
+        for (k, ok) in [(0.999, true), (1.001, false)] {
+            let c = Cue {
+                speed: 2.0,
+                aim: 0.0,
+                offset: [0.0, k * limit],
+                elevation: 1.2,
+            };
+            assert_eq!(cue::strike(&ball, &c, &p).is_ok(), ok, "{k}");
+        }
     }
 }
