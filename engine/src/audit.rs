@@ -39,15 +39,17 @@ pub struct Sweep {
 pub const POSITION_TOL: f64 = 1e-6;
 
 /// Whether ball state `s` (in play) is where a ball in play can be: its centre on the playing
-/// area or in a pocket's opening ([`Table::holds`]), no nearer a nose line than the nose edge
-/// allows at its height — R cos theta on the cloth, R from the edge in the air, up to the
-/// nose line itself for a ball whose lowest point is above the nose (one that crosses the
-/// line leaves play by its own event, `ball_off_table`).
+/// area or in a pocket's opening ([`Table::holds`]), sunk into no nose edge by more than
+/// [`POSITION_TOL`] — at least R cos theta from a nose line on the cloth, R from the edge in
+/// the air, up to the nose line itself for a ball whose lowest point is above the nose (one
+/// that crosses the line leaves play by its own event, `ball_off_table`). The depth, not the
+/// plan distance, is what the tolerance bounds: for a ball resting on top of the edge the plan
+/// distance at which it touches changes without bound with its height.
 pub fn on_table(table: &Table, p: &Params, s: &BallState) -> bool {
-    let r = p.ball_radius;
+    let r = p.ball_radius - POSITION_TOL;
     let rise = p.cushion_height - s.pos.z;
-    let reach = if s.pos.z < p.cushion_height + r {
-        (r * r - rise * rise).max(0.0).sqrt()
+    let reach = if rise.abs() < r {
+        (r * r - rise * rise).sqrt()
     } else {
         0.0
     };

@@ -150,6 +150,60 @@ fn every_way_off_the_cloth_is_an_event() {
 }
 
 #[test]
+fn a_ball_jumping_along_a_cushion_from_anywhere_on_its_line_meets_the_nose() {
+    // Balls frozen to a side cushion's line (at its nose, or across a pocket's mouth, where
+    // the line runs on with no nose), jumping and drifting along and into it: found by the
+    // 10^6 fuzz run (seed 20261128), the touch of the edge line beyond a nose's end hid the
+    // real touch of the nose further on.
+    let p = Params::default();
+    let table = Table::snooker(&Default::default());
+    let contact = p.cushion_contact_distance();
+    let mut rng = Rng(0x5eed_0022);
+    let mut met = 0;
+    for k in 0..1200 {
+        let (x, side) = (rng.uniform(0.1, table.length - 0.1), k % 2);
+        let y = if side == 0 {
+            contact
+        } else {
+            table.width - contact
+        };
+        let pos = Vec3::new(x, y, 0.0);
+        if table.placement_error(pos, contact).is_some() {
+            continue;
+        }
+        let into = if side == 0 { -1.0 } else { 1.0 };
+        let state = BallState {
+            pos: Vec3::new(x, y, p.ball_radius),
+            vel: Vec3::new(
+                rng.uniform(-2.0, 2.0),
+                into * rng.uniform(0.0, 0.1),
+                rng.uniform(0.5, 3.0),
+            ),
+            spin: rng.vec(50.0),
+            motion: Motion::Stationary,
+        };
+        let setup = Setup {
+            table: table.clone(),
+            params: p,
+            models: Models::default(),
+            balls: vec![ball("cue", state)],
+        };
+        let shot = simulate(&setup, &Default::default())
+            .unwrap_or_else(|e| panic!("shot {k}: {e}\n{:?}", setup.balls));
+        if let Some(broken) = audit::report(&audit::audit(&setup, &shot)) {
+            panic!("shot {k}: {broken}\n{:?}", setup.balls);
+        }
+        met += shot
+            .events
+            .iter()
+            .filter(|e| e.kind == EventKind::BallCushion && e.before[0].motion == Motion::Airborne)
+            .count()
+            .min(1);
+    }
+    assert!(met > 300, "{met}");
+}
+
+#[test]
 fn the_audit_refuses_a_ball_left_off_the_cloth() {
     // A ball at rest where no ball can be, still in play: the position check refuses it (the
     // engine never leaves one there; this is the audit's own test).

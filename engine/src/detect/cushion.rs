@@ -6,7 +6,7 @@
 //! one). A ball whose lowest point is above the nose when its centre crosses the nose line
 //! clears the cushion and leaves the table.
 
-use super::roots::{entries, first_entry, first_line_contact, ring_entries};
+use super::roots::{entries, first_entry, line_contacts, ring_entries};
 use super::{TOUCH_TOL, VERIFY_TOL};
 use crate::motion::Path;
 use crate::table::{Cushion, Jaw};
@@ -62,8 +62,10 @@ pub fn nose_time_in_air(
 /// of `cushion` (within its length) with its lowest point above the nose: it clears the
 /// cushion and leaves the table.
 pub fn over_time(path: &Path, cushion: &Cushion, edge: NoseEdge, window: f64) -> Option<f64> {
-    let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, 0.0, window)?;
-    (edge.cleared_at(path.at(t).z) && along(cushion, at)).then_some(t)
+    let plan = path.plan();
+    let (t, _) = line_contacts(&plan, cushion.start, cushion.normal, 0.0, window)
+        .find(|&(_, at)| along(cushion, at))?;
+    edge.cleared_at(path.at(t).z).then_some(t)
 }
 
 /// First time in [0, window] at which a ball in the air on `path` touches the rounded edge of
@@ -101,9 +103,10 @@ pub fn over_jaw_time(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> Opt
 /// First time in [0, window] at which `path` touches the straight `cushion` within its
 /// length, approaching it; `contact` is R cos(theta).
 pub fn nose_time(path: &Path, cushion: &Cushion, contact: f64, window: f64) -> Option<f64> {
-    let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, contact, window)?;
-    let along = (at - cushion.start).dot(&cushion.direction());
-    (along >= -TOUCH_TOL && along <= cushion.length() + TOUCH_TOL).then_some(t)
+    let plan = path.plan();
+    line_contacts(&plan, cushion.start, cushion.normal, contact, window)
+        .find(|&(_, at)| along(cushion, at))
+        .map(|(t, _)| t)
 }
 
 /// First time in [0, window] at which `path` touches the `jaw` arc, approaching it.
