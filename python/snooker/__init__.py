@@ -208,8 +208,8 @@ def plan(
     pocket: str,
     cue_to: Sequence[float],
     tolerance: float = 0.001,
-    noise: Union[str, dict, None] = None,
-    bounds: Union[str, dict, None] = None,
+    noise: Optional[dict] = None,
+    bounds: Optional[dict] = None,
     samples: int = 256,
     alternatives: int = 3,
     seed: int = 1,
@@ -220,19 +220,11 @@ def plan(
     probability under execution noise. Returns the plan document (formats.md, "Plan").
 
     ``noise``: standard deviations, e.g. ``{"aim": 0.002, "speed": 0.02, "offset": 0.001}``
-    (rad, fraction, m) or the command's ``"aim=0.002,speed=0.02"``; ``bounds``: e.g.
-    ``{"speed": (0.3, 6.0)}`` or ``"speed=0.3..6"``. Bad requests raise ``ValueError``; a
-    ball that cannot be potted raises ``CannotPot``.
+    (rad, fraction of the speed, m); ``bounds``: intervals, e.g. ``{"speed": (0.3, 6.0)}``
+    (keys ``speed`` m/s, ``elevation`` rad, ``side`` and ``height`` m). Bad requests raise
+    ``ValueError`` naming the argument (``noise['aim']``, ``cue_to``); a ball that cannot be
+    potted raises ``CannotPot``.
     """
-
-    def spec(v: Union[str, dict, None], interval: bool) -> str:
-        if v is None:
-            return ""
-        if isinstance(v, str):
-            return v
-        if interval:
-            return ",".join(f"{k}={lo}..{hi}" for k, (lo, hi) in v.items())
-        return ",".join(f"{k}={x}" for k, x in v.items())
 
     x, y = (float(c) for c in cue_to)
     text = _snooker.plan(
@@ -241,8 +233,8 @@ def plan(
         pocket,
         [x, y],
         float(tolerance),
-        spec(noise, False),
-        spec(bounds, True),
+        {k: float(v) for k, v in (noise or {}).items()},
+        {k: (float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()},
         int(samples),
         int(alternatives),
         int(seed),
@@ -252,8 +244,8 @@ def plan(
 
 
 def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> dict:
-    """Calls a native impact report with the command line's NAME=VALUE overrides."""
-    overrides = [f"{k}={v}" for k, v in (params or {}).items()]
+    """Calls a native impact report with parameter overrides by name."""
+    overrides = {str(k): float(v) for k, v in (params or {}).items()}
     text = native(float(speed), float(angle), float(topspin), float(sidespin), overrides)
     return json.loads(text)
 

@@ -1,7 +1,7 @@
 """Type stubs of the native module (built from the Rust crates by maturin)."""
 
 from os import PathLike
-from typing import List, Optional, Sequence, Tuple, Union
+from typing import Dict, List, Optional, Sequence, Tuple, Union
 
 class SimulationError(RuntimeError):
     """A valid scene that the engine could not simulate to its end."""
@@ -42,8 +42,8 @@ def plan(
     pocket: str,
     cue_to: Sequence[float],
     tolerance: float = 0.001,
-    noise: str = "",
-    bounds: str = "",
+    noise: Optional[Dict[str, float]] = None,
+    bounds: Optional[Dict[str, Tuple[float, float]]] = None,
     samples: int = 256,
     alternatives: int = 3,
     seed: int = 1,
@@ -54,12 +54,12 @@ def impact_ball_ball(
     cut: float = 0.0,
     topspin: float = 0.0,
     sidespin: float = 0.0,
-    params: Sequence[str] = (),
+    params: Dict[str, float] = {},
 ) -> str: ...
 def impact_cushion(
     speed: float,
     angle: float = 90.0,
     topspin: float = 0.0,
     sidespin: float = 0.0,
-    params: Sequence[str] = (),
+    params: Dict[str, float] = {},
 ) -> str: ...

@@ -8,8 +8,9 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use snooker_engine::SimError;
-use snooker_planner::{Bounds, Noise, PlanError, Request};
+use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
 use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -192,9 +193,25 @@ fn simulate_many(
         .collect()
 }
 
+/// The Python argument a planning request's field comes from, for messages.
+fn argument(field: RequestField) -> String {
+    match field {
+        RequestField::CueBall => "cue_ball".into(),
+        RequestField::Pot => "pot".into(),
+        RequestField::Pocket => "pocket".into(),
+        RequestField::Target => "cue_to".into(),
+        RequestField::Tolerance => "tolerance".into(),
+        RequestField::Samples => "samples".into(),
+        RequestField::Bounds(v) => format!("bounds['{}']", v.name()),
+        RequestField::Noise(c) => format!("noise['{}']", c.name()),
+    }
+}
+
 /// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as JSON text.
+/// `noise` maps `aim`, `speed`, `offset` to standard deviations; `bounds` maps `speed`,
+/// `elevation`, `side`, `height` to (low, high).
 #[pyfunction]
-#[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise="", bounds="",
+#[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise=None, bounds=None,
                     samples=256, alternatives=3, seed=1, cue_ball="cue"))]
 #[allow(clippy::too_many_arguments)]
 fn plan(
@@ -204,8 +221,8 @@ fn plan(
     pocket: &str,
     cue_to: [f64; 2],
     tolerance: f64,
-    noise: &str,
-    bounds: &str,
+    noise: Option<BTreeMap<String, f64>>,
+    bounds: Option<BTreeMap<String, (f64, f64)>>,
     samples: usize,
     alternatives: usize,
     seed: u64,
@@ -213,22 +230,39 @@ fn plan(
 ) -> PyResult<String> {
     let sc = scene.0.clone();
     let p = sc.setup.params;
-    let bad = |e: PlanError| PyValueError::new_err(e.to_string());
-    let request = Request {
+    let bad = |e: PlanError| match e {
+        PlanError::BadInput { field, reason } => {
+            PyValueError::new_err(format!("{}: {reason}", argument(field)))
+        }
+        PlanError::CannotPot(why) => CannotPot::new_err(format!("{}: {why}", sc.name)),
+    };
+    let mut request = Request {
         cue_ball: cue_ball.into(),
         tolerance,
-        bounds: Bounds::default_for(&p).with_spec(bounds, &p).map_err(bad)?,
-        noise: Noise::default().with_spec(noise).map_err(bad)?,
         samples,
         alternatives,
         seed,
         ..Request::new(pot, pocket, cue_to, &p)
     };
-    match py.detach(|| snooker_planner::plan(&sc, request)) {
-        Ok(plan) => Ok(serde_json::to_string(&plan).expect("JSON of finite numbers")),
-        Err(e @ PlanError::BadInput { .. }) => Err(bad(e)),
-        Err(e @ PlanError::CannotPot(_)) => Err(CannotPot::new_err(format!("{}: {e}", sc.name))),
+    for (name, sd) in noise.unwrap_or_default() {
+        let c = NoiseComponent::from_name(&name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "noise['{name}']: unknown noise (aim, speed, offset)"
+            ))
+        })?;
+        request.noise.set(c, sd);
     }
+    for (name, (lo, hi)) in bounds.unwrap_or_default() {
+        let v = StrikeVariable::from_name(&name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "bounds['{name}']: unknown variable (speed, elevation, side, height)"
+            ))
+        })?;
+        request.bounds.set(v, Interval { lo, hi });
+    }
+    py.detach(|| snooker_planner::plan(&sc, request))
+        .map(|plan| serde_json::to_string(&plan).expect("JSON of finite numbers"))
+        .map_err(bad)
 }
 
 /// The report of one impact (as `snooker impact --json`), as JSON text: `cut` (ball-ball,
@@ -238,11 +272,17 @@ fn impact(
     speed: f64,
     topspin: f64,
     sidespin: f64,
-    params: Vec<String>,
+    params: BTreeMap<String, f64>,
 ) -> PyResult<String> {
     let bad = |e: String| PyValueError::new_err(e);
-    let params = snooker_scene::override_params(snooker_engine::Params::default(), &params)
-        .map_err(|e| bad(e.to_string()))?;
+    let given: Vec<(String, f64)> = params.into_iter().collect();
+    let params = snooker_scene::override_params(snooker_engine::Params::default(), &given)
+        .map_err(|e| match &e {
+            snooker_scene::OverrideError::Unknown { name } => bad(format!("params['{name}']: {e}")),
+            snooker_scene::OverrideError::Invalid(p) => {
+                bad(format!("params['{}']: {}", p.name, p.reason))
+            }
+        })?;
     let spec = ImpactSpec {
         geometry,
         speed,
@@ -256,26 +296,26 @@ fn impact(
 
 /// A cue ball moving along +x at `speed` (m/s) meets a resting object ball at `cut` degrees.
 #[pyfunction]
-#[pyo3(signature = (speed, cut=0.0, topspin=0.0, sidespin=0.0, params=Vec::new()))]
+#[pyo3(signature = (speed, cut=0.0, topspin=0.0, sidespin=0.0, params=BTreeMap::new()))]
 fn impact_ball_ball(
     speed: f64,
     cut: f64,
     topspin: f64,
     sidespin: f64,
-    params: Vec<String>,
+    params: BTreeMap<String, f64>,
 ) -> PyResult<String> {
     impact(Geometry::BallBall { cut }, speed, topspin, sidespin, params)
 }
 
 /// A ball meets a cushion at `speed` (m/s), `angle` degrees from the cushion line.
 #[pyfunction]
-#[pyo3(signature = (speed, angle=90.0, topspin=0.0, sidespin=0.0, params=Vec::new()))]
+#[pyo3(signature = (speed, angle=90.0, topspin=0.0, sidespin=0.0, params=BTreeMap::new()))]
 fn impact_cushion(
     speed: f64,
     angle: f64,
     topspin: f64,
     sidespin: f64,
-    params: Vec<String>,
+    params: BTreeMap<String, f64>,
 ) -> PyResult<String> {
     impact(
         Geometry::Cushion { angle },

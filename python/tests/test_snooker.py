@@ -134,8 +134,13 @@ def test_the_chapter_7_plan_equals_the_cli():
     assert plan["best"]["strike"] == want["best"]["strike"]
     with pytest.raises(ValueError, match="pocket"):
         snooker.plan(ch7, "red", "no-such-pocket", (1.25, 0.0262))
-    with pytest.raises(ValueError, match="noise"):
-        snooker.plan(ch7, "red", "middle-left", (1.25, 0.0262), noise="aim=x")
+    with pytest.raises(ValueError, match=r"^noise\['aim'\]: expected a finite number") as e:
+        snooker.plan(ch7, "red", "middle-left", (1.25, 0.0262), noise={"aim": -1.0})
+    assert "--" not in str(e.value)
+    with pytest.raises(ValueError, match=r"^bounds\['speed'\]: outside the engine's strike"):
+        snooker.plan(ch7, "red", "middle-left", (1.25, 0.0262), bounds={"speed": (0.3, 40)})
+    with pytest.raises(ValueError, match=r"^cue_to: "):
+        snooker.plan(ch7, "red", "middle-left", (9.0, 0.5))
 
 
 def test_the_batch_table_reads_in_pyarrow(tmp_path):
@@ -175,6 +180,8 @@ def test_bad_impacts_raise_the_cli_messages():
     assert out.returncode == 2
     with pytest.raises(ValueError) as e:
         snooker.impact_ball_ball(30.0)
-    assert str(e.value) == out.stderr.strip().removeprefix("error: ")
+    # The same message, naming the Python argument where the command names its flag.
+    assert "--" + str(e.value) == out.stderr.strip().removeprefix("error: ")
+    assert str(e.value).startswith("speed must lie in")
     with pytest.raises(ValueError, match="mu_bal"):
         snooker.impact_cushion(1.0, params={"mu_bal": 0.1})

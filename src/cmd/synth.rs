@@ -134,7 +134,7 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
     let sc = snooker_scene::load(&req.scene)?;
     let mut shot = data_file::shot_from_scene(&sc);
     let base = Model {
-        params: snooker_scene::override_params(sc.setup.params, &req.params)?,
+        params: super::spec::params(sc.setup.params, &req.params).map_err(anyhow::Error::msg)?,
         models: sc.setup.models,
     };
     let hidden = hidden(&req.effects, &base)?;
