@@ -184,6 +184,18 @@ fn options(spec: &SceneFile, file: &str) -> Result<SimOptions, SceneError> {
 /// Builds and validates the scene of `spec`; `file` names it in errors.
 pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
     let fail = |key: &str, reason: String| SceneError::new(file, key, reason);
+    // A file's names were checked as it was read; a built scene's are checked here.
+    if let Some((name, _)) = spec
+        .params
+        .0
+        .iter()
+        .find(|(n, _)| Params::info(n).is_none())
+    {
+        return Err(fail(
+            &format!("params.{name}"),
+            format!("unknown parameter `{name}`"),
+        ));
+    }
     let params = spec.params.apply_to(Params::default());
     params
         .validate()

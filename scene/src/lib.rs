@@ -23,6 +23,7 @@ pub mod toml_input;
 pub mod write;
 
 pub use error::SceneError;
+pub use file::{BallSpec, CueSpec, SceneFile};
 pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
