@@ -2,11 +2,11 @@
 //! `unexplained`, `final_gap`), extended with uncertainties, the evidence for each decision,
 //! every candidate tried and where the residuals are, and as a plain-text summary.
 
-use super::catalogue::Effect;
-use super::data::Measurement;
-use super::fit::Fitted;
-use super::residuals::Gap;
-use super::workflow::{CandidateEffect, Findings, State};
+use crate::catalogue::Effect;
+use crate::data::Measurement;
+use crate::fit::Fitted;
+use crate::residuals::Gap;
+use crate::workflow::{CandidateEffect, Findings, State};
 use serde_json::{Map, Value, json};
 
 fn params_of(f: &Fitted) -> (Value, Value) {
@@ -46,7 +46,7 @@ fn state(s: &State) -> Value {
 
 /// The catalogue as documentation: id, description, source and parameters.
 pub fn catalogue() -> Value {
-    let model = super::data::Model {
+    let model = crate::data::Model {
         params: snooker_engine::Params::default(),
         models: snooker_engine::Models::default(),
     };

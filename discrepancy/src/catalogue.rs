@@ -2,7 +2,7 @@
 //! the range they may take, a one-line physical description and its source. An effect is a
 //! value of [`Effect`]; what it does to a model is [`Effect::apply`].
 
-use super::data::Model;
+use crate::data::Model;
 use serde::{Deserialize, Serialize};
 use snooker_engine::params::MAX_TILT_PER_MU_ROLL;
 use snooker_engine::{BallBallModel, CushionModel, Params};

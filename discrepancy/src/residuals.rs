@@ -1,8 +1,8 @@
 //! From a model and the fitted initial quantities to simulated shots, and from simulated
 //! shots to residuals: measured minus simulated, in units of the stated uncertainty.
 
-use super::data::{Measurement, Model, Moment, Nuisance, Observable, ShotData};
-use super::error::DiscrepancyError;
+use crate::data::{Measurement, Model, Moment, Nuisance, Observable, ShotData};
+use crate::error::DiscrepancyError;
 use nalgebra::DMatrix;
 use snooker_engine::cue;
 use snooker_engine::{BallState, EventKind, Motion, Setup, Shot, SimOptions, Vec3, simulate};
@@ -209,7 +209,7 @@ pub fn residuals(shot: &ShotData, sim: &Shot, noise: f64, window: f64, out: &mut
     for o in &shot.observables {
         let v = observed_value(sim, o).unwrap_or(0.0);
         let mut d = v - o.value;
-        if o.quantity == super::data::Quantity::Heading {
+        if o.quantity == crate::data::Quantity::Heading {
             d = (d + 180.0).rem_euclid(360.0) - 180.0;
         }
         out.push(d / o.sigma);

@@ -1,12 +1,12 @@
 //! Least-squares fits of effect parameters together with the shots' unknown initial
 //! quantities: Levenberg-Marquardt with bounds (MPFIT, via `rmpfit`) on the residuals of
-//! [`super::residuals`], finite-difference Jacobians, 1-sigma uncertainties from the
+//! [`crate::residuals`], finite-difference Jacobians, 1-sigma uncertainties from the
 //! covariance.
 
-use super::catalogue::{Effect, EffectParam};
-use super::data::{Measurement, Model};
-use super::error::DiscrepancyError;
-use super::residuals::{self, NuisanceValues};
+use crate::catalogue::{Effect, EffectParam};
+use crate::data::{Measurement, Model};
+use crate::error::DiscrepancyError;
+use crate::residuals::{self, NuisanceValues};
 use rmpfit::{MPConfig, MPError, MPFitter, MPPar, MPResult, MPSide};
 use snooker_engine::Shot;
 

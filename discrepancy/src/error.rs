@@ -1,7 +1,7 @@
 //! Why the workflow, a fit or a synthetic measurement could not be made.
 
-use super::catalogue::Effect;
-use super::data::DataError;
+use crate::catalogue::Effect;
+use crate::data::DataError;
 use snooker_engine::{CueError, SimError};
 
 /// Why the discrepancy workflow (or one of its fits or films) stopped.

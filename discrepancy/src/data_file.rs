@@ -5,8 +5,8 @@
 //!
 //! Also writes the files `snooker synth` makes.
 
-use super::data::{MeasuredStrike, Moment, Quantity};
-use super::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
+use crate::data::{MeasuredStrike, Moment, Quantity};
+use crate::data::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
 use snooker_engine::motion::Transition;
 use snooker_engine::{EventKind, Models, Params};

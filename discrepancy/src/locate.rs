@@ -3,8 +3,8 @@
 //! their trends with time, speed, spin and heading, and the measured speed-time curves of
 //! thesis chapter 5 (deceleration per phase) against the simulated ones.
 
-use super::data::{Measurement, Observable};
-use super::residuals::observed_state;
+use crate::data::{Measurement, Observable};
+use crate::residuals::observed_state;
 use serde::Serialize;
 use snooker_engine::{BallState, Motion, Shot};
 

@@ -12,12 +12,12 @@
 //!   data equally well the data cannot tell them apart, and the workflow says so instead of
 //!   guessing.
 
-use super::catalogue::Effect;
-use super::data::Measurement;
-use super::error::DiscrepancyError;
-use super::fit::{FitResult, Fitted, fit};
-use super::locate::{Location, locate};
-use super::residuals::{Gap, position_gap, starting_values};
+use crate::catalogue::Effect;
+use crate::data::Measurement;
+use crate::error::DiscrepancyError;
+use crate::fit::{FitResult, Fitted, fit};
+use crate::locate::{Location, locate};
+use crate::residuals::{Gap, position_gap, starting_values};
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -189,7 +189,7 @@ impl Findings {
 }
 
 fn observable_gap(m: &Measurement, sims: &[snooker_engine::Shot]) -> Gap {
-    let d: Vec<f64> = super::locate::observable_rows(m, sims)
+    let d: Vec<f64> = crate::locate::observable_rows(m, sims)
         .iter()
         .map(|o| (o.simulated.unwrap_or(0.0) - o.measured).abs())
         .collect();
@@ -203,7 +203,7 @@ fn observable_gap(m: &Measurement, sims: &[snooker_engine::Shot]) -> Gap {
 }
 
 fn mean_relative_error(m: &Measurement, r: &FitResult) -> f64 {
-    let rows = super::locate::observable_rows(m, &r.sims);
+    let rows = crate::locate::observable_rows(m, &r.sims);
     let errs: Vec<f64> = rows
         .iter()
         .filter(|o| o.measured != 0.0)
@@ -449,7 +449,7 @@ fn worst_observable(loc: &Location) -> Option<String> {
     loc.observables
         .iter()
         .max_by(|a, b| {
-            let r = |o: &super::locate::ObservableRow| {
+            let r = |o: &crate::locate::ObservableRow| {
                 (o.simulated.unwrap_or(0.0) - o.measured).abs() / o.sigma
             };
             r(a).total_cmp(&r(b))

@@ -4,10 +4,10 @@
 //! second, about 0.5 mm noise). Effects outside the catalogue ([`Uncatalogued`]) can be hidden
 //! too, to check the workflow says "unexplained" rather than name a wrong effect.
 
-use super::catalogue::Effect;
-use super::data::{Model, ShotData, TrackSample};
-use super::error::DiscrepancyError;
-use super::residuals::setup_for;
+use crate::catalogue::Effect;
+use crate::data::{Model, ShotData, TrackSample};
+use crate::error::DiscrepancyError;
+use crate::residuals::setup_for;
 use rand::RngExt;
 use rand::SeedableRng;
 use rand::rngs::ChaCha8Rng;
@@ -116,7 +116,7 @@ pub fn film(
     camera: &Camera,
 ) -> Result<(Shot, Vec<TrackSample>), DiscrepancyError> {
     check_camera(camera)?;
-    let values = super::residuals::scene_values(shot);
+    let values = crate::residuals::scene_values(shot);
     let setup = setup_for(shot, truth, &values)?;
     let opts = SimOptions {
         horizon: Some(camera.max_duration),

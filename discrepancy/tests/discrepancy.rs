@@ -4,13 +4,11 @@
 //! nothing hidden -> nothing named; two effects -> both; an effect outside the catalogue ->
 //! "unexplained" and no name.
 
+use snooker_discrepancy::data::MeasuredStrike;
+use snooker_discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
+use snooker_discrepancy::{Effect, Findings, Measurement, Model, Nuisance, Options, ShotData, run};
 use snooker_engine::cue::Cue;
 use snooker_engine::{Ball, BallKind, BallState, Models, Motion, Params, Setup, Table, Vec3};
-use snooker_validation::discrepancy::data::MeasuredStrike;
-use snooker_validation::discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
-use snooker_validation::discrepancy::{
-    Effect, Findings, Measurement, Model, Nuisance, Options, ShotData, run,
-};
 
 const NOISE: f64 = 5e-4;
 
