@@ -1,6 +1,6 @@
 //! The cross-check report: what one `snooker validate` produces ([`Report`], serialised as the
 //! JSON document), and its renderers: the terminal table ([`text`]) and the Markdown document
-//! docs/validation.md ([`markdown`], with its prose in [`method`]).
+//! docs/validation.md ([`markdown`], with its prose in the private module `method`).
 
 mod markdown;
 mod method;
