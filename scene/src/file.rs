@@ -2,7 +2,7 @@
 //! every key typed, unknown keys rejected, arrays of exactly the documented length.
 
 use serde::Deserialize;
-use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
+use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use snooker_engine::params::PARAMS;
 use snooker_engine::{BallBallModel, BallKind, CushionModel, TableKind};
 use std::fmt;
@@ -47,10 +47,12 @@ impl<'de, const N: usize> Deserialize<'de> for Numbers<N> {
     }
 }
 
-/// A whole scene file.
+/// A whole scene file. `X` is what its `[frame]` table is read as: a frame of snooker
+/// (formats.md, "Frame") for the rules crate; for a scene alone the table is not read
+/// ([`IgnoredAny`]: `snooker simulate` runs a frame file as the scene it is).
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
-pub struct SceneFile {
+pub struct SceneFile<X = IgnoredAny> {
     /// Free text (default: the file's stem).
     pub name: Option<String>,
     /// The table.
@@ -72,6 +74,8 @@ pub struct SceneFile {
     /// Limits of the simulation.
     #[serde(default)]
     pub sim: SimSpec,
+    /// `[frame]`: the state of a game of snooker, read by whoever asked for `X`.
+    pub frame: Option<X>,
 }
 
 /// `[table]`.

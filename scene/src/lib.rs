@@ -26,7 +26,7 @@ pub use error::SceneError;
 pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
-pub use toml_input::from_toml;
+pub use toml_input::{from_toml, key_position};
 
 use snooker_engine::cue::{Cue, Strike};
 use snooker_engine::{BallState, Setup, SimOptions};
