@@ -191,6 +191,9 @@ pub enum Problem {
     /// A strike the engine refuses (miscue, speed out of range...).
     #[error("{0}")]
     Strike(String),
+    /// A frame played after another that is not the frame the stroke left.
+    #[error("does not follow from the stroke before: {0}")]
+    DoesNotFollow(String),
     /// No strike to judge.
     #[error("a frame to referee needs its [cue] strike")]
     NoStrike,

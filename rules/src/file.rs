@@ -50,6 +50,36 @@ pub struct FrameFile {
     pub strike: Option<Cue>,
     /// The file as a scene.
     pub scene: Scene,
+    /// The file's name as given.
+    pub file: String,
+    /// Its text (for the line of a key).
+    text: String,
+    /// The scene-file key of each ball of the frame.
+    ball_keys: Vec<String>,
+}
+
+impl FrameFile {
+    /// A frame error as this file's error: the key as the file writes it (a listed ball's
+    /// `balls[i]`, a layout ball's `layout (ID)`), with its line and column when it has one.
+    pub fn locate(&self, e: &FrameError) -> SceneError {
+        locate(e, &self.ball_keys, &self.text, &self.file)
+    }
+}
+
+fn locate(e: &FrameError, ball_keys: &[String], text: &str, file: &str) -> SceneError {
+    let key = match &e.key {
+        Key::Ball(i, field) => match ball_keys.get(*i) {
+            Some(k) if k.starts_with("layout") || field.is_empty() => k.clone(),
+            Some(k) => format!("{k}.{field}"),
+            None => e.key.to_string(),
+        },
+        k => k.to_string(),
+    };
+    let mut reason = e.problem.to_string();
+    if let Some((l, c)) = snooker_scene::key_position(text, &key) {
+        reason = format!("{reason} (line {l}, column {c})");
+    }
+    SceneError::new(file, &key, reason)
 }
 
 /// Reads a frame file.
@@ -94,21 +124,7 @@ fn from_parts(read: WithFrame<FrameSpec>, text: &str, file: &str) -> Result<Fram
             "a frame file needs its [frame] table (on, scores, to_play, ...: formats.md, \"Frame\")",
         ));
     };
-    let located = |e: FrameError| {
-        let key = match &e.key {
-            Key::Ball(i, field) => match ball_keys.get(*i) {
-                Some(k) if k.starts_with("layout") || field.is_empty() => k.clone(),
-                Some(k) => format!("{k}.{field}"),
-                None => e.key.to_string(),
-            },
-            k => k.to_string(),
-        };
-        let mut reason = e.problem.to_string();
-        if let Some((l, c)) = snooker_scene::key_position(text, &key) {
-            reason = format!("{reason} (line {l}, column {c})");
-        }
-        SceneError::new(file, &key, reason)
-    };
+    let located = |e: FrameError| locate(&e, &ball_keys, text, file);
     let state = (|| {
         Ok(FrameState {
             on: spec.on,
@@ -150,6 +166,9 @@ fn from_parts(read: WithFrame<FrameSpec>, text: &str, file: &str) -> Result<Fram
         frame,
         strike: strike.map(|(_, c)| c),
         scene,
+        file: file.to_string(),
+        text: text.to_string(),
+        ball_keys,
     })
 }
 

@@ -22,6 +22,7 @@
 //! }
 //! ```
 
+pub mod chain;
 pub mod colour;
 pub mod error;
 pub mod file;
