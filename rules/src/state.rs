@@ -145,53 +145,86 @@ pub(crate) fn deserialize_nominated<'de, D: Deserializer<'de>>(
     d.deserialize_str(Name)
 }
 
-/// `scores`: exactly two non-negative integers.
+/// `scores`: exactly two non-negative integers; anything else is one error at the key itself.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Scores(pub [u32; 2]);
 
-impl<'de> Deserialize<'de> for Scores {
+/// One element of `scores` as given: a non-negative integer that fits, or what it was instead.
+enum Score {
+    Points(u32),
+    Not(String),
+}
+
+impl<'de> Deserialize<'de> for Score {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        const WHAT: &str = "two non-negative integers, the points of player 0 and player 1";
-        /// One score: a non-negative integer and nothing else.
-        struct Score(u32);
-        impl<'de> Deserialize<'de> for Score {
-            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-                struct Int;
-                impl Visitor<'_> for Int {
-                    type Value = Score;
-                    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                        write!(f, "{WHAT}")
-                    }
-                    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Score, E> {
-                        u32::try_from(v)
-                            .map(Score)
-                            .map_err(|_| E::custom(format!("must be {WHAT}: {v} is too large")))
-                    }
-                    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Score, E> {
-                        if v < 0 {
-                            return Err(E::custom(format!("must be {WHAT}, got {v}")));
-                        }
-                        self.visit_u64(v as u64)
-                    }
+        struct Any;
+        impl<'de> Visitor<'de> for Any {
+            type Value = Score;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "anything")
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Score, E> {
+                Ok(u32::try_from(v).map_or(Score::Not(v.to_string()), Score::Points))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Score, E> {
+                match u64::try_from(v) {
+                    Ok(v) => self.visit_u64(v),
+                    Err(_) => Ok(Score::Not(v.to_string())),
                 }
-                d.deserialize_any(Int)
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Score, E> {
+                Ok(Score::Not(v.to_string()))
+            }
+            fn visit_bool<E: de::Error>(self, v: bool) -> Result<Score, E> {
+                Ok(Score::Not(v.to_string()))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Score, E> {
+                Ok(Score::Not(format!("\"{v}\"")))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Score, A::Error> {
+                while seq.next_element::<de::IgnoredAny>()?.is_some() {}
+                Ok(Score::Not("an array".into()))
+            }
+            fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Score, A::Error> {
+                while map
+                    .next_entry::<de::IgnoredAny, de::IgnoredAny>()?
+                    .is_some()
+                {}
+                Ok(Score::Not("a table".into()))
             }
         }
+        d.deserialize_any(Any)
+    }
+}
+
+impl<'de> Deserialize<'de> for Scores {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        const WHAT: &str = "must be two non-negative integers, the points of player 0 and player 1";
         struct Pair;
         impl<'de> Visitor<'de> for Pair {
             type Value = Scores;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                write!(f, "{WHAT}")
+                write!(f, "two non-negative integers")
             }
             fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Scores, A::Error> {
                 let mut out = Vec::new();
-                while let Some(Score(v)) = seq.next_element::<Score>()? {
+                while let Some(v) = seq.next_element::<Score>()? {
                     out.push(v);
                 }
                 match out[..] {
-                    [a, b] => Ok(Scores([a, b])),
+                    [Score::Points(a), Score::Points(b)] => Ok(Scores([a, b])),
+                    [_, _] => {
+                        let bad = out.iter().find_map(|v| match v {
+                            Score::Not(s) => Some(s.clone()),
+                            Score::Points(_) => None,
+                        });
+                        Err(de::Error::custom(format!(
+                            "{WHAT}, got {}",
+                            bad.unwrap_or_default()
+                        )))
+                    }
                     _ => Err(de::Error::custom(format!(
-                        "must be {WHAT}, got {} numbers",
+                        "{WHAT}, got {} values",
                         out.len()
                     ))),
                 }
