@@ -13,6 +13,8 @@ use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+mod rules;
+
 create_exception!(
     _snooker,
     SimulationError,
@@ -291,6 +293,8 @@ fn impact_cushion(
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Scene>()?;
     m.add_class::<Shot>()?;
+    m.add_class::<rules::Frame>()?;
+    m.add_class::<rules::Verdict>()?;
     m.add_function(wrap_pyfunction!(load, m)?)?;
     m.add_function(wrap_pyfunction!(parse_toml, m)?)?;
     m.add_function(wrap_pyfunction!(parse_json, m)?)?;
