@@ -296,7 +296,7 @@ impl Frame {
             e => SimulationError::new_err(e.to_string()),
         })?;
         let next = match frame.next(&verdict) {
-            Next::Play(f) => Some(Py::new(py, Frame(f))?.into_any()),
+            Next::Play(f) => Some(Py::new(py, Frame(*f))?.into_any()),
             Next::Over { .. } => None,
         };
         let v = Verdict {

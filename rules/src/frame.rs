@@ -459,7 +459,7 @@ impl Frame {
     }
 
     /// A frame from parts already checked elsewhere (the next frame of a judged stroke).
-    pub(crate) fn from_parts(&self, balls: Vec<Ball>, state: FrameState) -> Frame {
+    pub(crate) fn with_parts(&self, balls: Vec<Ball>, state: FrameState) -> Frame {
         Frame {
             name: self.name.clone(),
             table: self.table.clone(),

@@ -58,7 +58,7 @@ impl Verdict {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Next {
     /// The frame goes on from this frame.
-    Play(Frame),
+    Play(Box<Frame>),
     /// The frame is over.
     Over {
         /// The winner.
@@ -73,7 +73,7 @@ impl Frame {
     /// and next state, or the end of the frame.
     pub fn next(&self, verdict: &Verdict) -> Next {
         match verdict.next {
-            Some(state) => Next::Play(self.from_parts(verdict.balls.clone(), state)),
+            Some(state) => Next::Play(Box::new(self.with_parts(verdict.balls.clone(), state))),
             None => Next::Over {
                 winner: verdict.winner.unwrap_or(0),
                 scores: verdict.scores,

@@ -20,20 +20,20 @@ fn frame(reds: usize, seed: u64, pick: [u32; 6]) -> Frame {
             2 => (On::Colour, None, false),
             _ => (On::Red, Some(colour(pick[1])), true),
         }
-    } else if pick[0] % 3 == 0 {
+    } else if pick[0].is_multiple_of(3) {
         (On::Colour, Some(colour(pick[1])), false)
     } else {
         // The closing sequence from a random colour: the lower ones already potted.
         let c = colour(pick[2]);
         balls.retain(|b| Colour::of(b.kind).is_none_or(|k| k >= c));
-        let free = pick[1] % 2 == 0 && c != Colour::Black;
+        let free = pick[1].is_multiple_of(2) && c != Colour::Black;
         let nominated = free.then(|| {
             let higher: Vec<Colour> = Colour::ALL.into_iter().filter(|&k| k > c).collect();
             higher[pick[3] as usize % higher.len()]
         });
         (On::Closing(c), nominated, free)
     };
-    let ball_in_hand = pick[4] % 3 == 0;
+    let ball_in_hand = pick[4].is_multiple_of(3);
     if ball_in_hand {
         balls.retain(|b| b.kind != BallKind::Cue);
     }
@@ -145,7 +145,7 @@ proptest! {
             // And its file reads back to the same frame.
             let text = n.to_toml(None);
             let read = snooker_rules::parse(&text, "next.toml").unwrap_or_else(|e| panic!("{e}\n{text}"));
-            prop_assert_eq!(read.frame, n);
+            prop_assert_eq!(read.frame, *n);
         }
     }
 
@@ -176,7 +176,7 @@ proptest! {
             let strike = Cue { speed, aim: d.y.atan2(d.x) + miss, offset: [0.0, height], elevation: 0.0 };
             let stroke = f.play(&strike).unwrap_or_else(|e| panic!("{e}\n{}", f.to_toml(Some(&strike))));
             match f.next(&stroke.verdict) {
-                Next::Play(n) => f = n,
+                Next::Play(n) => f = *n,
                 Next::Over { winner, scores } => {
                     prop_assert!(scores[winner as usize] > scores[1 - winner as usize]);
                     ended = true;

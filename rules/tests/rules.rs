@@ -40,7 +40,7 @@ fn foul(v: &Verdict) -> (FoulReason, u32) {
 
 fn next(f: &FrameFile, v: &Verdict) -> Frame {
     match f.frame.next(v) {
-        Next::Play(n) => n,
+        Next::Play(n) => *n,
         Next::Over { .. } => panic!("the frame is over"),
     }
 }
