@@ -46,24 +46,19 @@ impl TheD {
         self.centre + d
     }
 
-    /// Points of the D on a square grid `step` apart, the centre among them, in an order that
-    /// starts at the centre of the baulk line and works outwards (z = 0).
-    pub fn grid(&self, step: f64) -> Vec<Vec3> {
+    /// Points of the D on a square grid `step` apart, the centre among them (z = 0), lazily:
+    /// row by row from the baulk line back, each row from the centre line outwards
+    /// alternately, so that a search stopping at its first success tries the middle first.
+    pub fn grid(&self, step: f64) -> impl Iterator<Item = Vec3> + '_ {
         let n = (self.radius / step).floor() as i64;
-        let mut out = Vec::new();
-        for i in -n..=0 {
-            for j in -n..=n {
-                let p = self.centre + Vec3::new(i as f64 * step, j as f64 * step, 0.0);
-                if self.contains(p) {
-                    out.push(p);
-                }
-            }
-        }
-        out.sort_by(|a, b| {
-            let (da, db) = ((a - self.centre).norm(), (b - self.centre).norm());
-            da.total_cmp(&db)
-        });
-        out
+        (0..=n)
+            .flat_map(move |i| {
+                (0..=2 * n).map(move |j| {
+                    let k = if j % 2 == 0 { -(j / 2) } else { j / 2 + 1 };
+                    self.centre + Vec3::new(-(i as f64) * step, k as f64 * step, 0.0)
+                })
+            })
+            .filter(move |&p| self.contains(p))
     }
 }
 
@@ -100,7 +95,6 @@ pub fn nearest_placement(d: &TheD, preferred: Vec3, others: &[Ball], radius: f64
         return Some(near);
     }
     d.grid(PLACEMENT_STEP)
-        .into_iter()
         .filter(|&p| ok(p))
         .min_by(|a, b| (a - preferred).norm().total_cmp(&(b - preferred).norm()))
 }
@@ -122,8 +116,13 @@ mod tests {
         assert!(d.contains(Vec3::new(0.737 - 0.292, 0.889, 0.0)));
         assert!(!d.contains(Vec3::new(0.7371, 0.889, 0.0)));
         assert!(!d.contains(Vec3::new(0.5, 0.889 + 0.25, 0.0)));
-        let g = d.grid(0.01);
+        let g: Vec<Vec3> = d.grid(0.01).collect();
         assert!(g.iter().all(|&p| d.contains(p)));
+        let mut distinct: Vec<(u64, u64)> =
+            g.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
+        distinct.sort_unstable();
+        distinct.dedup();
+        assert_eq!(distinct.len(), g.len());
         // pi r^2 / 2 = 0.1339 m^2: about 1339 points a centimetre apart.
         assert!(g.len() > 1300 && g.len() < 1380, "{}", g.len());
         assert_eq!(g[0], d.centre);

@@ -67,7 +67,7 @@ pub const IN_HAND_STEP: f64 = 0.005;
 /// from and are skipped). Stops at the first position that is not snookered.
 pub fn is_snookered_in_hand(d: &TheD, on: &[Vec3], not_on: &[Vec3], radius: f64) -> bool {
     let two_r2 = (2.0 * radius).powi(2);
-    d.grid(IN_HAND_STEP).into_iter().all(|p| {
+    d.grid(IN_HAND_STEP).all(|p| {
         let blocked = on.iter().chain(not_on).any(|b| {
             let (dx, dy) = (b.x - p.x, b.y - p.y);
             dx * dx + dy * dy <= two_r2
