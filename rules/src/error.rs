@@ -59,9 +59,7 @@ pub enum Problem {
         colour: Colour,
     },
     /// A ball moving or spinning: a stroke starts with every ball at rest.
-    #[error(
-        "ball \"{id}\" is moving: a stroke is played with every ball at rest (WPBSA Section 3 Rule 11)"
-    )]
+    #[error("ball \"{id}\" is moving: a stroke is played with every ball at rest")]
     Moving {
         /// Its id.
         id: String,
