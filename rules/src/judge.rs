@@ -131,10 +131,13 @@ impl Frame {
             (None, _) if potted_on.is_empty() => 0,
             (None, _) => value_on,
         };
+        // Saturating: a file may give scores near the integers' end.
         let mut scores = s.scores;
-        scores[s.to_play as usize] += points;
+        let me = s.to_play as usize;
+        scores[me] = scores[me].saturating_add(points);
         if let Some(f) = &foul {
-            scores[opponent(s.to_play) as usize] += f.points;
+            let other = opponent(s.to_play) as usize;
+            scores[other] = scores[other].saturating_add(f.points);
         }
 
         // Where the balls are: at rest on the table, or out of play.
