@@ -12,6 +12,14 @@ Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's
 Scenes are given as a path to a scene file, TOML text, or a dict with the scene file's keys.
 Bad scenes raise ``ValueError`` with the command line's message; a valid scene that the engine
 could not simulate raises ``SimulationError``.
+
+Snooker by the rules: ``snooker.Frame`` is a frame between strokes (the balls at rest, the ball
+on, the scores, whose turn), ``frame.play(strike)`` simulates a stroke and judges it:
+
+    >>> frame = snooker.Frame.break_off()
+    >>> verdict, after = frame.play({"speed": 7.0, "aim": 0.0465})
+    >>> verdict.foul is None or verdict.foul in ("first_hit_not_on", "cue_ball_potted")
+    True
 """
 
 from __future__ import annotations
@@ -30,6 +38,9 @@ from ._snooker import CannotPot, SimulationError
 __all__ = [
     "Scene",
     "Shot",
+    "Frame",
+    "Verdict",
+    "frame",
     "SimulationError",
     "CannotPot",
     "scene",
@@ -42,6 +53,12 @@ __all__ = [
 
 Scene = _snooker.Scene
 SceneLike = Union[str, "os.PathLike[str]", dict, "_snooker.Scene"]
+#: A frame of snooker between strokes (see ``frame``); ``Frame.break_off()``,
+#: ``Frame.open_table(reds, seed)``, ``Frame.load(path)``, ``Frame.from_dict(d)``.
+Frame = _snooker.Frame
+#: The referee's verdict on a stroke (``Frame.play``).
+Verdict = _snooker.Verdict
+FrameLike = Union[str, "os.PathLike[str]", dict, "_snooker.Frame"]
 
 
 def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
@@ -67,6 +84,35 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
         return _snooker.load(source)
     raise ValueError(
         f"{name}: a scene is a path, TOML text or a dict, not {type(source).__name__}"
+    )
+
+
+def _dict_json(source: dict, name: str) -> str:
+    """A dict with a scene or frame file's keys as JSON text, refused (``ValueError``, the
+    parser's words) where a value is not finite or not JSON."""
+    bad = _not_json(source, "")
+    if bad is not None:
+        raise ValueError(f"{name}: {bad}")
+    return json.dumps(source, allow_nan=False, default=_plain)
+
+
+def frame(source: FrameLike, name: str = "frame") -> "_snooker.Frame":
+    """Reads and checks a frame of snooker (formats.md, "Frame": a scene plus a ``[frame]``
+    table): a path to a frame file, TOML text, a dict with the file's keys, or a frame already
+    read. Its ``[cue]``, if any, is not part of the frame (pass the strike to ``play``).
+    Raises ``ValueError`` naming the file, key and reason."""
+    if isinstance(source, _snooker.Frame):
+        return source
+    if isinstance(source, dict):
+        return _snooker.Frame.from_dict(source, name)
+    if isinstance(source, os.PathLike):
+        return _snooker.Frame.load(os.fspath(source))
+    if isinstance(source, str):
+        if "\n" in source or "=" in source:
+            return _snooker.Frame.from_toml(source, name)
+        return _snooker.Frame.load(source)
+    raise ValueError(
+        f"{name}: a frame is a path, TOML text or a dict, not {type(source).__name__}"
     )
 
 

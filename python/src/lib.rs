@@ -14,6 +14,8 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+mod rules;
+
 create_exception!(
     _snooker,
     SimulationError,
@@ -331,6 +333,8 @@ fn impact_cushion(
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Scene>()?;
     m.add_class::<Shot>()?;
+    m.add_class::<rules::Frame>()?;
+    m.add_class::<rules::Verdict>()?;
     m.add_function(wrap_pyfunction!(load, m)?)?;
     m.add_function(wrap_pyfunction!(parse_toml, m)?)?;
     m.add_function(wrap_pyfunction!(parse_json, m)?)?;

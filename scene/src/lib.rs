@@ -27,7 +27,7 @@ pub use file::{BallSpec, CueSpec, SceneFile};
 pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
-pub use toml_input::from_toml;
+pub use toml_input::{from_toml, key_position};
 
 use snooker_engine::cue::{Cue, Strike};
 use snooker_engine::{BallState, Setup, SimOptions};
@@ -77,6 +77,47 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 /// Parses and validates scene text; `file` names it in error messages.
 pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     build::build(from_toml(text, file)?, file)
+}
+
+/// A scene file read with its `[frame]` table (formats.md, "Frame": a scene plus the state of
+/// a game of snooker): the scene, the table as the caller's type `X` (`None` when the file has
+/// none), and the scene-file key of each ball of the setup (`balls[2]`, `layout (red3)`), so
+/// that the caller's own checks name the key at fault as the scene's do.
+#[derive(Debug, Clone)]
+pub struct WithFrame<X> {
+    /// The scene (the cue strike applied).
+    pub scene: Scene,
+    /// The `[frame]` table.
+    pub frame: Option<X>,
+    /// The key of each ball of `scene.setup.balls`, in its order.
+    pub ball_keys: Vec<String>,
+}
+
+fn with_frame<X>(mut spec: file::SceneFile<X>, file: &str) -> Result<WithFrame<X>, SceneError> {
+    let frame = spec.frame.take();
+    let (scene, ball_keys) = build::build_keyed(spec, file)?;
+    Ok(WithFrame {
+        scene,
+        frame,
+        ball_keys,
+    })
+}
+
+/// Parses and validates scene text with its `[frame]` table read as `X` (errors in the table
+/// name their key, line and column like any other); `file` names it in error messages.
+pub fn parse_with_frame<X: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<WithFrame<X>, SceneError> {
+    with_frame(from_toml(text, file)?, file)
+}
+
+/// As [`parse_with_frame`], for a scene given as one JSON object.
+pub fn parse_json_with_frame<X: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<WithFrame<X>, SceneError> {
+    with_frame(from_json(text, file)?, file)
 }
 
 /// Parses and validates a scene given as one JSON object with the scene file's keys (a line
