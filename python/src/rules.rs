@@ -96,17 +96,14 @@ impl Frame {
             .map_err(bad_scene)
     }
 
-    /// A frame from a dict with the frame file's keys (`frame`, `balls`, `layout`, ...;
-    /// NumPy arrays and numbers welcome as values).
+    /// A frame from a dict with the frame file's keys (`frame`, `balls`, `layout`, ...; lists,
+    /// numbers and strings as its values), checked by the rules crate as a file is.
     #[staticmethod]
     #[pyo3(signature = (source, name="frame"))]
-    fn from_dict(py: Python<'_>, source: &Bound<'_, PyDict>, name: &str) -> PyResult<Frame> {
-        let text: String = py
-            .import("snooker")?
-            .getattr("_dict_json")?
-            .call1((source, name))?
-            .extract()?;
-        Frame::from_json(&text, name)
+    fn from_dict(source: &Bound<'_, PyAny>, name: &str) -> PyResult<Frame> {
+        snooker_rules::from_value(&mut pythonize::Depythonizer::from_object(source), name)
+            .map(|f| Frame(f.frame))
+            .map_err(bad_scene)
     }
 
     /// The start of a frame: the rack, the colours on their spots, the cue ball in hand in
@@ -435,7 +432,7 @@ impl Verdict {
     fn to_json(&self, shot: bool) -> String {
         let doc = shot.then(|| {
             let s = self.shot.get();
-            snooker_scene::result::result_json(&s.scene, &s.shot)
+            snooker_scene::result::result_record(&s.scene, &s.shot)
         });
         serde_json::to_string(&self.verdict.report(doc)).expect("JSON of finite numbers")
     }

@@ -1,6 +1,6 @@
 //! Frame files (formats.md, "Frame"): a scene file plus a `[frame]` table, read through the
 //! scene crate (its parser, checks and messages: file, key, reason, line), and written back
-//! so that every number reads back to the bit (`--frame-out`).
+//! so that every number reads back to the bit (the referee's next frame).
 
 use crate::colour::Colour;
 use crate::error::{FrameError, Key, Problem};
@@ -102,6 +102,15 @@ pub fn parse_json(text: &str, file: &str) -> Result<FrameFile, SceneError> {
         text,
         file,
     )
+}
+
+/// Reads a frame given as a value of any self-describing format with the frame file's keys
+/// (a Python dict through pythonize): errors name the key, without a line.
+pub fn from_value<'de, D: serde::Deserializer<'de>>(
+    d: D,
+    file: &str,
+) -> Result<FrameFile, SceneError> {
+    from_parts(snooker_scene::parse_value_with_frame(d, file)?, "", file)
 }
 
 fn player(key: &'static str, v: i64) -> Result<u8, FrameError> {

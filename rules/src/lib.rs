@@ -40,7 +40,7 @@ pub mod verdict;
 
 pub use colour::Colour;
 pub use error::{FrameError, JudgeError, Key, Problem};
-pub use file::{FrameFile, load, parse, parse_json};
+pub use file::{FrameFile, from_value, load, parse, parse_json};
 pub use foul::{Foul, FoulReason};
 pub use frame::{Frame, Role};
 pub use play::{PlayError, Stroke};

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 /// The referee's result of one stroke.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct RefereeReport<'a, S: Serialize = serde_json::Value> {
+pub struct RefereeReport<'a, S: Serialize = snooker_scene::result::ShotRecord> {
     /// No foul.
     pub legal: bool,
     /// The foul, `null` for a legal stroke.

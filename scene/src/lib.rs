@@ -7,8 +7,10 @@
 //! ```
 //! let scene = snooker_scene::parse(snooker_scene::DEFAULT_SCENE, "break-off.toml").unwrap();
 //! let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
-//! let json = snooker_scene::result::result_json(&scene, &shot);
-//! assert_eq!(json["scene"], "break-off");
+//! let doc = snooker_scene::result::result_record(&scene, &shot);
+//! assert_eq!(doc.scene, "break-off");
+//! let json = serde_json::to_string(&doc).unwrap(); // as `snooker simulate --json` writes it
+//! assert!(json.starts_with(r#"{"scene":"break-off","events":["#));
 //! ```
 
 pub mod build;
@@ -20,6 +22,7 @@ pub mod model;
 pub mod params;
 pub mod result;
 pub mod toml_input;
+pub mod value_input;
 pub mod write;
 
 pub use error::SceneError;
@@ -28,6 +31,7 @@ pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
 pub use toml_input::{from_toml, key_position};
+pub use value_input::from_value;
 
 use snooker_engine::cue::{Cue, Strike};
 use snooker_engine::{BallState, Setup, SimOptions};
@@ -110,6 +114,25 @@ pub fn parse_with_frame<X: serde::de::DeserializeOwned>(
     file: &str,
 ) -> Result<WithFrame<X>, SceneError> {
     with_frame(from_toml(text, file)?, file)
+}
+
+/// As [`parse_with_frame`], for a scene given as a value of any self-describing format (a
+/// Python dict): errors name the key but no line.
+pub fn parse_value_with_frame<'de, D, X>(d: D, file: &str) -> Result<WithFrame<X>, SceneError>
+where
+    D: serde::Deserializer<'de>,
+    X: serde::Deserialize<'de>,
+{
+    with_frame(from_value(d, file)?, file)
+}
+
+/// Parses and validates a scene given as a value of any self-describing format (a Python
+/// dict through pythonize) with the scene file's keys; `file` names it in error messages.
+pub fn parse_value<'de, D: serde::Deserializer<'de>>(
+    d: D,
+    file: &str,
+) -> Result<Scene, SceneError> {
+    build::build(from_value::<D, file::SceneFile>(d, file)?, file)
 }
 
 /// As [`parse_with_frame`], for a scene given as one JSON object.

@@ -192,7 +192,7 @@ pub fn run(args: Args) -> ExitCode {
 
     // Outputs, made whole before any is written.
     let doc = json.map(|_| {
-        let shot = result::result_json(&last.file.scene, &last.shot);
+        let shot = result::result_record(&last.file.scene, &last.shot);
         serde_json::to_string_pretty(&last.verdict.report(Some(shot)))
             .expect("JSON of finite numbers")
     });

@@ -64,7 +64,12 @@ fn runs_of(report: &Report, method: Method) -> impl Iterator<Item = &RunReport> 
 fn table_head(out: &mut String, fixed: [&str; 4], figures: impl Iterator<Item = String>) {
     let names: Vec<String> = fixed.iter().map(|s| s.to_string()).chain(figures).collect();
     let _ = writeln!(out, "| {} |", names.join(" | "));
-    let _ = writeln!(out, "|{}", "---|".repeat(names.len()));
+    let _ = writeln!(out, "{}", separator(names.len()));
+}
+
+/// A Markdown table's separator row for `columns` columns: `|---|---|`.
+fn separator(columns: usize) -> String {
+    format!("{}|", "|---".repeat(columns))
 }
 
 /// The rest of a row of a run that was not compared: its verdict, and a dash per figure.
@@ -341,11 +346,9 @@ fn convergence(out: &mut String, report: &Report) {
     }
     // No wall-clock column: the committed report must regenerate without a diff (issue 12);
     // the JSON report (`--json`) keeps each step's time.
-    out.push_str(" passed |\n|---|");
-    for _ in FIGURES {
-        out.push_str("---|");
-    }
-    out.push_str("---|\n");
+    out.push_str(" passed |\n");
+    out.push_str(&separator(FIGURES.len() + 2));
+    out.push('\n');
     for row in &report.convergence {
         let _ = write!(out, "| {} |", row.dt);
         for d in &row.max_diff {
