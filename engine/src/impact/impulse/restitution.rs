@@ -17,6 +17,21 @@ impl Backing {
         }
     }
 
+    /// The restitution of a frictionless impact of a ball of `mass` whose contact approaches
+    /// at `speed` (m/s), the rubber's own being `e`: the square root of the share of the
+    /// compression's work M speed^2 / 2 that comes back. A time-stepped engine (the rapier
+    /// cross-check) applies it as Newton's restitution.
+    pub fn restitution(&self, e: f64, mass: f64, speed: f64) -> f64 {
+        if !(speed > 0.0) {
+            return e;
+        }
+        let scaled = self.scaled(mass, speed);
+        if 0.5 <= scaled.bottom_energy {
+            return e;
+        }
+        (scaled.given_back(e, 0.5) / 0.5).sqrt()
+    }
+
     /// The work given back of `w_c` stored (the units of `self`, the mass 1): e^2 of the
     /// rubber's share, up to `bottom_energy`, and (1 - damping v)^2 of the rest, which met
     /// the backing at v = sqrt(2 W) (the speed at which the reference mass carries it).
