@@ -68,33 +68,29 @@ pub fn catalogue() -> Value {
 
 /// One step (named, refitted or tentative) as JSON.
 fn step(s: &Step) -> Value {
-    {
-        {
-            let added = s
-                .fitted
-                .iter()
-                .find(|f| f.effect == s.effect)
-                .expect("a step's effect is among its fitted effects");
-            let (params, uncertainties) = params_of(added);
-            json!({
-                "effect": s.effect.id(),
-                "params": params,
-                "gap": s.gap,
-                "refit": s.refit,
-                "uncertainties": uncertainties,
-                "observable_gap": s.observable_gap,
-                "description": s.effect.description(),
-                "source": s.effect.source(),
-                "delta_bic": s.delta_bic,
-                "chi2": s.chi2,
-                "refitted": s.fitted.iter().map(|f| {
-                    let (p, u) = params_of(f);
-                    json!({"effect": f.effect.id(), "params": p, "uncertainties": u})
-                }).collect::<Vec<_>>(),
-                "candidates": s.candidates.iter().map(candidate).collect::<Vec<_>>(),
-            })
-        }
-    }
+    let added = s
+        .fitted
+        .iter()
+        .find(|f| f.effect == s.effect)
+        .expect("a step's effect is among its fitted effects");
+    let (params, uncertainties) = params_of(added);
+    json!({
+        "effect": s.effect.id(),
+        "params": params,
+        "gap": s.gap,
+        "refit": s.refit,
+        "uncertainties": uncertainties,
+        "observable_gap": s.observable_gap,
+        "description": s.effect.description(),
+        "source": s.effect.source(),
+        "delta_bic": s.delta_bic,
+        "chi2": s.chi2,
+        "refitted": s.fitted.iter().map(|f| {
+            let (p, u) = params_of(f);
+            json!({"effect": f.effect.id(), "params": p, "uncertainties": u})
+        }).collect::<Vec<_>>(),
+        "candidates": s.candidates.iter().map(candidate).collect::<Vec<_>>(),
+    })
 }
 
 /// The report of `o` on `m` (formats.md's keys first).

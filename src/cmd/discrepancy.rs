@@ -233,7 +233,8 @@ fn cross_validation(args: &Args, m: &Measurement, prefix: &str) -> ExitCode {
             Err(e) => return failed(format!("{}: {name}: {e}", args.data.display())),
         }
     }
-    let mut md = format!("| model | fitted on | train error | test error |\n|---|---|---|---|\n");
+    let mut md =
+        String::from("| model | fitted on | train error | test error |\n|---|---|---|---|\n");
     for r in &rows {
         let fitted: Vec<String> = r
             .folds

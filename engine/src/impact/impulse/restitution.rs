@@ -22,7 +22,7 @@ impl Backing {
     /// compression's work M speed^2 / 2 that comes back. A time-stepped engine (the rapier
     /// cross-check) applies it as Newton's restitution.
     pub fn restitution(&self, e: f64, mass: f64, speed: f64) -> f64 {
-        if !(speed > 0.0) {
+        if speed.is_nan() || speed <= 0.0 {
             return e;
         }
         let scaled = self.scaled(mass, speed);
