@@ -13,7 +13,10 @@
 //! outside the catalogue's forms, say), the nearest catalogue laws are reported as tentative
 //! steps, nothing is named, and the residual is reported as unexplained where it sits.
 //!
-//! A step (refit or new effect) is taken only if all of these hold:
+//! A step (refit or new effect) is taken only if the residual is significant (chi2 more than
+//! [`Options::significance`] standard deviations above its expectation: otherwise there is
+//! nothing to explain, and an effect that still lowers the BIC is fitting the noise) and all
+//! of these hold:
 //! - its fit lowers the Bayesian information criterion (chi2 + k ln n, known noise; Schwarz
 //!   1978) by at least [`Options::threshold`] (10: "very strong" evidence, Kass & Raftery 1995);
 //! - it explains at least [`Options::min_share`] of the excess chi2 (chi2 above its expected
@@ -92,6 +95,9 @@ pub enum EffectVerdict {
     ExplainsTooLittle,
     /// It explains the data as well as the best one: the data cannot tell them apart.
     Indistinguishable,
+    /// The residual is already consistent with the stated noise: nothing is left for the
+    /// effect to explain, however much it would lower the BIC.
+    NotNeeded,
     /// A fitted value sits at the edge of its admissible range: the fit wants a value the
     /// law does not allow (or the effect off), so it is not the law the data follow.
     AtLimit,
@@ -120,6 +126,7 @@ impl std::fmt::Display for EffectVerdict {
             EffectVerdict::ExplainsTooLittle => f.write_str("explains too little"),
             EffectVerdict::Indistinguishable => f.write_str("indistinguishable"),
             EffectVerdict::AtLimit => f.write_str("at the edge of its range"),
+            EffectVerdict::NotNeeded => f.write_str("not needed: the residual is noise"),
             EffectVerdict::NotApplicable => write!(f, "{}", DiscrepancyError::NotApplicable),
             EffectVerdict::Failed(e) => write!(f, "failed: {e}"),
         }
@@ -338,7 +345,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
             .par_iter()
             .map(|&(e, refit)| (e, refit, try_effect(m, &named, &current, e, refit)))
             .collect();
-        let (excess_now, _) = excess(&current, opts);
+        let (excess_now, limit) = excess(&current, opts);
         let mut cands: Vec<(CandidateEffect, Option<FitResult>)> = fits
             .into_iter()
             .map(|(effect, refit, r)| match r {
@@ -392,6 +399,8 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                 EffectVerdict::ExplainsTooLittle
             } else if c.fitted.as_ref().is_some_and(at_limit) {
                 EffectVerdict::AtLimit
+            } else if excess_now <= limit {
+                EffectVerdict::NotNeeded
             } else {
                 EffectVerdict::Qualified
             };

@@ -476,6 +476,17 @@ fn rolling_resistance_different_along_x_and_y_names_nothing_wrong() {
 }
 
 #[test]
+fn strongly_anisotropic_rolling_resistance_names_nothing_wrong() {
+    // Twice the resistance across the table as along it: no one mu_roll fits both.
+    outside_the_catalogue(
+        Uncatalogued::AnisotropicRolling { mu_roll_y: 0.0256 },
+        vec![round_the_table()],
+        &[Effect::RollingResistance],
+        25,
+    );
+}
+
+#[test]
 fn throw_falling_with_speed_names_nothing_wrong() {
     // The second example: once "explained" by a 3e-5 table slope. One impact's throw
     // is one friction: its refit is the law's own form.
