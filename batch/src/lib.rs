@@ -13,7 +13,8 @@
 //! let shots = snooker_batch::simulate_many(&scenes, Some(2), || {}).unwrap();
 //! assert_eq!(shots[0].as_ref().unwrap(), shots[1].as_ref().unwrap());
 //! let line = snooker_batch::line::json_line(&sources[0].name, &scenes[0], &shots[0]);
-//! assert_eq!(line["source"], "s.jsonl:1");
+//! let json = serde_json::to_value(&line).unwrap();
+//! assert_eq!(json["source"], "s.jsonl:1");
 //! ```
 
 pub mod input;

@@ -4,7 +4,7 @@
 
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
-use snooker_scene::{Scene, parse_json};
+use snooker_scene::{BallSpec, CueSpec, Scene, SceneFile};
 
 /// The two sets, named: "two-ball shots" (256) and "break-offs" (32).
 pub fn throughput_sets() -> [(&'static str, Vec<Scene>); 2] {
@@ -24,28 +24,28 @@ fn two_ball(rng: &mut ChaCha8Rng) -> Scene {
             continue;
         }
         let aim = (o[1] - c[1]).atan2(o[0] - c[0]) + rng.random_range(-0.02..0.02);
-        let text = format!(
-            r#"{{"balls": [{{"id": "cue", "pos": [{}, {}]}}, {{"id": "red", "pos": [{}, {}]}}],
-                "cue": {{"ball": "cue", "speed": {}, "aim": {aim}, "offset": [{}, {}]}}}}"#,
-            c[0],
-            c[1],
-            o[0],
-            o[1],
-            rng.random_range(0.5..5.0),
-            rng.random_range(-0.01..0.01),
-            rng.random_range(-0.01..0.01),
-        );
-        return parse_json(&text, "two-ball").expect("a generated scene is valid");
+        let speed = rng.random_range(0.5..5.0);
+        let offset = [rng.random_range(-0.01..0.01), rng.random_range(-0.01..0.01)];
+        return SceneFile::new()
+            .with_ball(BallSpec::at("cue", c))
+            .with_ball(BallSpec::at("red", o))
+            .with_strike(CueSpec::new("cue", speed, aim).with_offset(offset))
+            .build("two-ball")
+            .expect("a generated scene is valid");
     }
 }
 
 /// The break-off struck at 2.5-4.5 m/s, its heading within 0.01 rad of the scene file's.
 fn break_off(rng: &mut ChaCha8Rng) -> Scene {
-    let text = format!(
-        r#"{{"layout": "break-off", "cue": {{"ball": "cue", "speed": {}, "aim": {},
-             "offset": [0.004, 0.0], "elevation": 0.1}}}}"#,
-        rng.random_range(2.5..4.5),
-        -0.006 + rng.random_range(-0.01..0.01),
-    );
-    parse_json(&text, "break-off").expect("a generated scene is valid")
+    let speed = rng.random_range(2.5..4.5);
+    let aim = -0.006 + rng.random_range(-0.01..0.01);
+    SceneFile::new()
+        .with_layout("break-off")
+        .with_strike(
+            CueSpec::new("cue", speed, aim)
+                .with_offset([0.004, 0.0])
+                .with_elevation(0.1),
+        )
+        .build("break-off")
+        .expect("a generated scene is valid")
 }

@@ -31,7 +31,10 @@ pub mod scene_out;
 pub mod search;
 pub mod trial;
 
-pub use problem::{Bounds, Interval, Noise, PlanError, Problem, Request};
+pub use problem::{
+    Bounds, Interval, Noise, NoiseComponent, PlanError, Problem, Request, RequestField,
+    StrikeVariable,
+};
 pub use robust::Robustness;
 pub use trial::{Fault, Route, Trial};
 

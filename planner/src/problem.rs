@@ -6,14 +6,133 @@ use snooker_engine::{Params, Setup, SimOptions, Vec3};
 use snooker_scene::Scene;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+/// A field of a planning request, as errors name it: the library speaks of the request's own
+/// fields (`pot`, `bounds.speed`, `noise.aim`), and each front end says how its user spelled
+/// them (a command-line flag, a Python argument).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum RequestField {
+    /// [`Request::cue_ball`].
+    CueBall,
+    /// [`Request::pot`].
+    Pot,
+    /// [`Request::pocket`].
+    Pocket,
+    /// [`Request::target`].
+    Target,
+    /// [`Request::tolerance`].
+    Tolerance,
+    /// [`Request::samples`].
+    Samples,
+    /// One interval of [`Request::bounds`].
+    Bounds(StrikeVariable),
+    /// One standard deviation of [`Request::noise`].
+    Noise(NoiseComponent),
+}
+
+impl std::fmt::Display for RequestField {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self {
+            RequestField::CueBall => f.write_str("cue_ball"),
+            RequestField::Pot => f.write_str("pot"),
+            RequestField::Pocket => f.write_str("pocket"),
+            RequestField::Target => f.write_str("target"),
+            RequestField::Tolerance => f.write_str("tolerance"),
+            RequestField::Samples => f.write_str("samples"),
+            RequestField::Bounds(v) => write!(f, "bounds.{}", v.name()),
+            RequestField::Noise(c) => write!(f, "noise.{}", c.name()),
+        }
+    }
+}
+
+/// A strike variable the search ranges over ([`Bounds`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StrikeVariable {
+    /// Cue speed, m/s.
+    Speed,
+    /// Cue elevation, rad.
+    Elevation,
+    /// Side offset, m.
+    Side,
+    /// Height offset, m.
+    Height,
+}
+
+impl StrikeVariable {
+    /// All of them, in the order the bounds list them.
+    pub const ALL: [StrikeVariable; 4] = [
+        StrikeVariable::Speed,
+        StrikeVariable::Elevation,
+        StrikeVariable::Side,
+        StrikeVariable::Height,
+    ];
+
+    /// Its name (`speed`, `elevation`, `side`, `height`).
+    pub fn name(self) -> &'static str {
+        match self {
+            StrikeVariable::Speed => "speed",
+            StrikeVariable::Elevation => "elevation",
+            StrikeVariable::Side => "side",
+            StrikeVariable::Height => "height",
+        }
+    }
+
+    /// Its unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            StrikeVariable::Speed => "m/s",
+            StrikeVariable::Elevation => "rad",
+            StrikeVariable::Side | StrikeVariable::Height => "m",
+        }
+    }
+
+    /// The variable of that name.
+    pub fn from_name(name: &str) -> Option<StrikeVariable> {
+        Self::ALL.into_iter().find(|v| v.name() == name)
+    }
+}
+
+/// A component of the execution noise ([`Noise`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NoiseComponent {
+    /// Heading, rad.
+    Aim,
+    /// Speed, a fraction of the speed.
+    Speed,
+    /// Each tip offset, m.
+    Offset,
+}
+
+impl NoiseComponent {
+    /// All of them.
+    pub const ALL: [NoiseComponent; 3] = [
+        NoiseComponent::Aim,
+        NoiseComponent::Speed,
+        NoiseComponent::Offset,
+    ];
+
+    /// Its name (`aim`, `speed`, `offset`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NoiseComponent::Aim => "aim",
+            NoiseComponent::Speed => "speed",
+            NoiseComponent::Offset => "offset",
+        }
+    }
+
+    /// The component of that name.
+    pub fn from_name(name: &str) -> Option<NoiseComponent> {
+        Self::ALL.into_iter().find(|c| c.name() == name)
+    }
+}
+
 /// Why there is no plan.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PlanError {
     /// The request does not make sense for this scene (exit 2 in the command).
-    #[error("{key}: {reason}")]
+    #[error("{field}: {reason}")]
     BadInput {
-        /// The option or key at fault (`--pot`, `--bounds speed`, ...).
-        key: String,
+        /// The request's field at fault.
+        field: RequestField,
         /// Why.
         reason: String,
     },
@@ -22,9 +141,9 @@ pub enum PlanError {
     CannotPot(String),
 }
 
-fn bad(key: &str, reason: impl Into<String>) -> PlanError {
+fn bad(field: RequestField, reason: impl Into<String>) -> PlanError {
     PlanError::BadInput {
-        key: key.into(),
+        field,
         reason: reason.into(),
     }
 }
@@ -83,89 +202,80 @@ impl Bounds {
         }
     }
 
-    /// `self` with the intervals of `spec` ("speed=0.3..6,elevation=0..0,side=-0.01..0.01,
-    /// height=..."), each checked against the engine's strike limits: the cue's speed and
-    /// elevation ranges, and offsets at which the cue's axis passes within the miscue limit of
-    /// the centre (`cue.rs`: the contact lies miscue_limit R from the axis when the axis
-    /// passes miscue_limit (R + r) from the centre; a height offset is foreshortened by
-    /// cos(elevation), so a steeper cue allows a larger one).
-    pub fn with_spec(mut self, spec: &str, p: &Params) -> Result<Bounds, PlanError> {
-        // Offsets are checked once the elevations are known, whatever the order given.
-        let mut offsets: Vec<(String, &str, Interval)> = Vec::new();
-        for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            let key = format!("--bounds {part}");
-            let (name, range) = part
-                .split_once('=')
-                .ok_or_else(|| bad(&key, "expected NAME=LO..HI"))?;
-            let (lo, hi) = range
-                .split_once("..")
-                .ok_or_else(|| bad(&key, "expected NAME=LO..HI"))?;
-            let num = |s: &str| {
-                s.trim()
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|v| v.is_finite())
-                    .ok_or_else(|| bad(&key, format!("`{s}` is not a finite number")))
-            };
-            let iv = Interval {
-                lo: num(lo)?,
-                hi: num(hi)?,
-            };
-            if iv.lo > iv.hi {
-                return Err(bad(&key, "the low end is above the high end"));
-            }
-            let (slot, allowed, unit) = match name.trim() {
-                "speed" => (&mut self.speed, (1e-3, MAX_CUE_SPEED), "m/s"),
-                "elevation" => (&mut self.elevation, (0.0, MAX_ELEVATION), "rad"),
-                "side" => {
-                    offsets.push((key, "side", iv));
-                    continue;
-                }
-                "height" => {
-                    offsets.push((key, "height", iv));
-                    continue;
-                }
-                other => {
-                    return Err(bad(
-                        &key,
-                        format!("unknown variable `{other}` (speed, elevation, side, height)"),
-                    ));
-                }
-            };
-            if iv.lo < allowed.0 || iv.hi > allowed.1 {
-                return Err(bad(
-                    &key,
-                    format!(
-                        "outside the engine's strike limits [{}, {}] {unit}",
-                        allowed.0, allowed.1
-                    ),
-                ));
-            }
-            *slot = iv;
+    /// The interval of variable `v`.
+    pub fn get(&self, v: StrikeVariable) -> Interval {
+        match v {
+            StrikeVariable::Speed => self.speed,
+            StrikeVariable::Elevation => self.elevation,
+            StrikeVariable::Side => self.side,
+            StrikeVariable::Height => self.height,
         }
+    }
+
+    /// Sets the interval of variable `v`.
+    pub fn set(&mut self, v: StrikeVariable, iv: Interval) {
+        match v {
+            StrikeVariable::Speed => self.speed = iv,
+            StrikeVariable::Elevation => self.elevation = iv,
+            StrikeVariable::Side => self.side = iv,
+            StrikeVariable::Height => self.height = iv,
+        }
+    }
+
+    /// The engine's limits on variable `v` for parameters `p`, with the elevations `self`
+    /// allows: the cue's speed and elevation ranges, and offsets at which the cue's axis passes
+    /// within the miscue limit of the centre (`cue.rs`, thesis eq. 7.7: the contact lies
+    /// miscue_limit R from the axis when the axis passes miscue_limit (R + r) from the centre).
+    /// A height offset is foreshortened by cos(elevation), so a steeper cue allows a larger one.
+    pub fn limits(&self, v: StrikeVariable, p: &Params) -> Interval {
         let reach = p.miscue_limit * (p.ball_radius + p.cue_tip_radius);
-        for (key, name, iv) in offsets {
-            let (limit, slot) = if name == "side" {
-                (reach, &mut self.side)
-            } else {
-                (reach / self.elevation.hi.cos(), &mut self.height)
-            };
-            if iv.lo < -limit || iv.hi > limit {
-                return Err(bad(
-                    &key,
-                    format!(
-                        "outside the engine's strike limits [{:.4}, {limit:.4}] m: beyond, the \
-                         cue's axis passes more than miscue_limit (R + r) = {:.1} mm from the \
-                         centre at every elevation up to {:.4} rad, a miscue",
-                        -limit,
-                        reach * 1e3,
+        let (lo, hi) = match v {
+            StrikeVariable::Speed => (1e-3, MAX_CUE_SPEED),
+            StrikeVariable::Elevation => (0.0, MAX_ELEVATION),
+            StrikeVariable::Side => (-reach, reach),
+            StrikeVariable::Height => {
+                let h = reach / self.elevation.hi.cos();
+                (-h, h)
+            }
+        };
+        Interval { lo, hi }
+    }
+
+    /// Checks every interval (in the order of [`StrikeVariable::ALL`], elevation before the
+    /// offsets it limits): finite, ordered, and within [`Bounds::limits`].
+    pub fn check(&self, p: &Params) -> Result<(), PlanError> {
+        for v in StrikeVariable::ALL {
+            let iv = self.get(v);
+            let field = RequestField::Bounds(v);
+            if !(iv.lo.is_finite() && iv.hi.is_finite()) {
+                return Err(bad(field, "the ends must be finite numbers"));
+            }
+            if iv.lo > iv.hi {
+                return Err(bad(field, "the low end is above the high end"));
+            }
+            let allowed = self.limits(v, p);
+            if iv.lo < allowed.lo || iv.hi > allowed.hi {
+                let why = match v {
+                    StrikeVariable::Side | StrikeVariable::Height => format!(
+                        ": beyond, the cue's axis passes more than miscue_limit (R + r) = {:.1} mm \
+                         from the centre at every elevation up to {:.4} rad, a miscue",
+                        p.miscue_limit * (p.ball_radius + p.cue_tip_radius) * 1e3,
                         self.elevation.hi
                     ),
+                    _ => String::new(),
+                };
+                return Err(bad(
+                    field,
+                    format!(
+                        "outside the engine's strike limits [{:.4}, {:.4}] {}{why}",
+                        allowed.lo,
+                        allowed.hi,
+                        v.unit()
+                    ),
                 ));
             }
-            *slot = iv;
         }
-        Ok(self)
+        Ok(())
     }
 }
 
@@ -193,32 +303,36 @@ impl Default for Noise {
 }
 
 impl Noise {
-    /// `self` with the values of `spec` ("aim=0.002,speed=0.02,offset=0.001").
-    pub fn with_spec(mut self, spec: &str) -> Result<Noise, PlanError> {
-        for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            let key = format!("--noise {part}");
-            let (name, value) = part
-                .split_once('=')
-                .ok_or_else(|| bad(&key, "expected NAME=VALUE"))?;
-            let v: f64 = value
-                .trim()
-                .parse()
-                .ok()
-                .filter(|v: &f64| v.is_finite() && *v >= 0.0)
-                .ok_or_else(|| bad(&key, "expected a finite number >= 0"))?;
-            match name.trim() {
-                "aim" => self.aim = v,
-                "speed" => self.speed = v,
-                "offset" => self.offset = v,
-                other => {
-                    return Err(bad(
-                        &key,
-                        format!("unknown noise `{other}` (aim, speed, offset)"),
-                    ));
-                }
+    /// The standard deviation of component `c`.
+    pub fn get(&self, c: NoiseComponent) -> f64 {
+        match c {
+            NoiseComponent::Aim => self.aim,
+            NoiseComponent::Speed => self.speed,
+            NoiseComponent::Offset => self.offset,
+        }
+    }
+
+    /// Sets the standard deviation of component `c`.
+    pub fn set(&mut self, c: NoiseComponent, value: f64) {
+        match c {
+            NoiseComponent::Aim => self.aim = value,
+            NoiseComponent::Speed => self.speed = value,
+            NoiseComponent::Offset => self.offset = value,
+        }
+    }
+
+    /// Checks every standard deviation: a finite number, at least 0.
+    pub fn check(&self) -> Result<(), PlanError> {
+        for c in NoiseComponent::ALL {
+            let v = self.get(c);
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(bad(
+                    RequestField::Noise(c),
+                    format!("expected a finite number >= 0, got {v}"),
+                ));
             }
         }
-        Ok(self)
+        Ok(())
     }
 }
 
@@ -297,25 +411,28 @@ impl Problem {
         }
         let p = setup.params;
         let r = p.ball_radius;
-        let index = |key: &str, id: &str| {
+        let index = |field: RequestField, id: &str| {
             setup.balls.iter().position(|b| b.id == id).ok_or_else(|| {
                 let ids: Vec<&str> = setup.balls.iter().map(|b| b.id.as_str()).collect();
                 bad(
-                    key,
+                    field,
                     format!("no ball \"{id}\" in the scene (it has {})", ids.join(", ")),
                 )
             })
         };
-        let cue = index("--cue-ball", &request.cue_ball)?;
-        let object = index("--pot", &request.pot)?;
+        let cue = index(RequestField::CueBall, &request.cue_ball)?;
+        let object = index(RequestField::Pot, &request.pot)?;
         if object == cue {
-            return Err(bad("--pot", "the cue ball cannot be the ball to pot"));
+            return Err(bad(
+                RequestField::Pot,
+                "the cue ball cannot be the ball to pot",
+            ));
         }
-        for (i, key) in [(cue, "--cue-ball"), (object, "--pot")] {
+        for (i, field) in [(cue, RequestField::CueBall), (object, RequestField::Pot)] {
             let s = setup.balls[i].state;
             if s.motion != snooker_engine::Motion::Stationary {
                 return Err(bad(
-                    key,
+                    field,
                     format!(
                         "ball \"{}\" must be at rest on the cloth to plan",
                         setup.balls[i].id
@@ -336,7 +453,7 @@ impl Problem {
                     .map(|p| p.name.as_str())
                     .collect();
                 bad(
-                    "--pocket",
+                    RequestField::Pocket,
                     format!(
                         "no pocket \"{}\" on this table (it has {})",
                         request.pocket,
@@ -350,17 +467,20 @@ impl Problem {
             })?;
         let [x, y] = request.target;
         if !(x.is_finite() && y.is_finite()) {
-            return Err(bad("--cue-to", "the target must be finite"));
+            return Err(bad(RequestField::Target, "the target must be finite"));
         }
         let target = Vec3::new(x, y, r);
         if let Some(why) = setup.table.placement_error(target, r) {
-            return Err(bad("--cue-to", format!("a ball cannot stop there: {why}")));
+            return Err(bad(
+                RequestField::Target,
+                format!("a ball cannot stop there: {why}"),
+            ));
         }
         for (i, b) in setup.balls.iter().enumerate() {
             let gap = (b.state.pos - target).xy().norm();
             if i != cue && i != object && b.state.motion.in_play() && gap < 2.0 * r {
                 return Err(bad(
-                    "--cue-to",
+                    RequestField::Target,
                     format!(
                         "the cue ball would overlap \"{}\" there ({:.1} mm apart, centres)",
                         b.id,
@@ -370,11 +490,16 @@ impl Problem {
             }
         }
         if !(request.tolerance.is_finite() && request.tolerance > 0.0) {
-            return Err(bad("--tolerance", "must be a positive distance, m"));
+            return Err(bad(
+                RequestField::Tolerance,
+                "must be a positive distance, m",
+            ));
         }
         if request.samples == 0 {
-            return Err(bad("--samples", "at least one sample"));
+            return Err(bad(RequestField::Samples, "at least one sample"));
         }
+        request.bounds.check(&p)?;
+        request.noise.check()?;
         Ok(Problem {
             setup,
             options: scene.options,
@@ -403,19 +528,29 @@ mod tests {
     use snooker_engine::BallState;
     use snooker_engine::cue::{self, Cue};
 
+    /// The default bounds with the given intervals (side, height, elevation), checked.
+    fn checked(p: &Params, set: &[(StrikeVariable, f64, f64)]) -> Result<Bounds, PlanError> {
+        let mut b = Bounds::default_for(p);
+        for &(v, lo, hi) in set {
+            b.set(v, Interval { lo, hi });
+        }
+        b.check(p).map(|()| b)
+    }
+
     #[test]
     fn offset_bounds_are_the_engines_at_the_elevations_allowed() {
+        use StrikeVariable::{Elevation, Height, Side};
         let p = Params::default();
-        let bounds = |spec: &str| Bounds::default_for(&p).with_spec(spec, &p);
-        // A level cue: the axis within miscue_limit (R + r) = 18.1 mm of the centre.
-        assert!(bounds("side=-0.018..0.018,height=-0.018..0.018").is_ok());
-        let e = bounds("height=0.0..0.019").unwrap_err().to_string();
+        // A level cue: the axis within miscue_limit (R + r) = 18.1 mm of the centre (issue 21:
+        // the bounds said 13.1 mm, miscue_limit R, which is where the contact lies, not the axis).
+        assert!(checked(&p, &[(Side, -0.018, 0.018), (Height, -0.018, 0.018)]).is_ok());
+        let e = checked(&p, &[(Height, 0.0, 0.019)])
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("18.1 mm"), "{e}");
-        // Issue 21's massé, a 40 mm height offset at 1.2 rad, is within them; given in either
-        // order.
-        assert!(bounds("elevation=0..1.2,height=0..0.04").is_ok());
-        assert!(bounds("height=0..0.04,elevation=0..1.2").is_ok());
-        assert!(bounds("elevation=0..1.2,height=0..0.051").is_err());
+        // Issue 21's massé, a 40 mm height offset at 1.2 rad, is within them.
+        assert!(checked(&p, &[(Elevation, 0.0, 1.2), (Height, 0.0, 0.04)]).is_ok());
+        assert!(checked(&p, &[(Elevation, 0.0, 1.2), (Height, 0.0, 0.051)]).is_err());
         // The limits say what the engine does: just inside, a strike; just beyond, a miscue.
         let ball = BallState::at_rest(1.0, 0.9, p.ball_radius);
         let limit = p.miscue_limit * (p.ball_radius + p.cue_tip_radius) / 1.2f64.cos();

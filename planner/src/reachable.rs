@@ -7,8 +7,7 @@
 use crate::{Problem, Request};
 use rand::RngExt;
 use snooker_engine::{Cue, Params, SnookerDims};
-use snooker_scene::parse;
-use snooker_scene::write::{BallText, SceneText};
+use snooker_scene::{BallSpec, SceneFile, parse};
 
 /// Ids of the balls placed: the cue ball, the object ball, then the others.
 const IDS: [&str; 8] = ["cue", "obj", "b1", "b2", "b3", "b4", "b5", "b6"];
@@ -30,17 +29,12 @@ pub struct Reachable {
 
 /// A scene text with `balls` at (x, y).
 fn scene_text(balls: &[(&str, [f64; 2])]) -> String {
-    let balls = balls.iter().map(|&(id, pos)| BallText {
-        id: id.into(),
-        pos,
-        vel: None,
-        spin: None,
-    });
-    SceneText {
-        balls: balls.collect(),
-        ..SceneText::default()
-    }
-    .to_toml()
+    balls
+        .iter()
+        .fold(SceneFile::new(), |scene, &(id, pos)| {
+            scene.with_ball(BallSpec::at(id, pos))
+        })
+        .to_toml()
 }
 
 /// A random position and a random strike from it (speed 0.5-5 m/s, a cut within 0.8 of the

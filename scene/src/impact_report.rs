@@ -4,7 +4,7 @@
 //! once each ball's slip on the cloth has ended (run by the engine on the open table), its hop,
 //! and the normal impulse (thesis §6.1, §6.2; figs. 6.14, 6.15, 6.23).
 
-use serde_json::{Map, Value, json};
+use serde::{Deserialize, Serialize};
 use snooker_engine::impact::ball_ball::mathavan as bb;
 use snooker_engine::impact::cushion::mathavan as cush;
 use snooker_engine::impact::impulse::{ImpactError, Sample};
@@ -57,10 +57,10 @@ pub struct ImpactSpec {
 #[derive(Debug, thiserror::Error)]
 pub enum ImpactReportError {
     /// The incoming speed is outside (0, [`MAX_SPEED`]].
-    #[error("--speed must lie in (0, {MAX_SPEED}] m/s, got {0}")]
+    #[error("speed must lie in (0, {MAX_SPEED}] m/s, got {0}")]
     Speed(f64),
     /// A spin is outside [-[`MAX_SPIN`], [`MAX_SPIN`]].
-    #[error("--{name} must lie in [-{MAX_SPIN}, {MAX_SPIN}] (units of V/R), got {value}")]
+    #[error("{name} must lie in [-{MAX_SPIN}, {MAX_SPIN}] (units of V/R), got {value}")]
     Spin {
         /// `topspin` or `sidespin`.
         name: &'static str,
@@ -69,7 +69,7 @@ pub enum ImpactReportError {
     },
     /// Speed and spins give a surface speed beyond any shot.
     #[error(
-        "--speed {speed} with these spins gives the ball a surface speed R|w| of {surface} m/s, \
+        "speed {speed} with these spins gives the ball a surface speed R|w| of {surface} m/s, \
          beyond any shot (at most {MAX_SPIN_SPEED} m/s)"
     )]
     SurfaceSpeed {
@@ -79,10 +79,10 @@ pub enum ImpactReportError {
         surface: f64,
     },
     /// The cut is outside (-89, 89) degrees.
-    #[error("--cut must lie in (-89, 89) degrees, got {0}")]
+    #[error("cut must lie in (-89, 89) degrees, got {0}")]
     Cut(f64),
     /// The angle is outside (0, 90] degrees.
-    #[error("--angle must lie in (0, 90] degrees, got {0}")]
+    #[error("angle must lie in (0, 90] degrees, got {0}")]
     Angle(f64),
     /// The impact solver failed.
     #[error("the impact: {0}")]
@@ -92,27 +92,125 @@ pub enum ImpactReportError {
     Slip(#[from] SimError),
 }
 
+impl ImpactReportError {
+    /// The input at fault (`speed`, `topspin`, `sidespin`, `cut`, `angle`), which the message
+    /// begins with; none for a failure of the solver.
+    pub fn field(&self) -> Option<&'static str> {
+        match self {
+            ImpactReportError::Speed(_) | ImpactReportError::SurfaceSpeed { .. } => Some("speed"),
+            ImpactReportError::Spin { name, .. } => Some(name),
+            ImpactReportError::Cut(_) => Some("cut"),
+            ImpactReportError::Angle(_) => Some("angle"),
+            ImpactReportError::Impact(_) | ImpactReportError::Slip(_) => None,
+        }
+    }
+}
+
 /// An impact's report: the document, the solver's samples (if asked for) and the axes a plot
 /// of the slips uses (horizontal and vertical directions across the contact).
 #[derive(Debug, Clone)]
 pub struct ImpactReport {
     /// The result document (`snooker impact --json`).
-    pub doc: Value,
+    pub doc: ImpactRecord,
     /// The plot's axes.
     pub axes: (Vec3, Vec3),
 }
 
+/// The impact asked for, as the report repeats it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ImpactInput {
+    /// `ball-ball` or `cushion`.
+    pub setup: String,
+    /// Incoming speed, m/s.
+    pub speed: f64,
+    /// Cut angle (ball-ball) or angle of incidence from the cushion line, degrees.
+    pub angle_deg: f64,
+    /// Topspin, units of V/R.
+    pub topspin_v_over_r: f64,
+    /// Sidespin, units of V/R.
+    pub sidespin_v_over_r: f64,
+    /// Ball-ball friction.
+    pub mu_ball: f64,
+    /// Ball-ball restitution.
+    pub e_ball: f64,
+    /// Cushion friction.
+    pub mu_cushion: f64,
+    /// Cushion restitution.
+    pub e_cushion: f64,
+    /// Cloth sliding friction.
+    pub mu_slide: f64,
+}
+
+/// A ball's motion as the report describes it (directions from the incoming ball's path or
+/// the cushion line).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MotionSummary {
+    /// Horizontal speed, m/s.
+    pub speed: f64,
+    /// Heading, degrees.
+    pub direction_deg: f64,
+    /// Vertical speed, m/s.
+    pub vertical_speed: f64,
+    /// Angular velocity, rad/s.
+    pub spin: [f64; 3],
+    /// Its vertical part, rad/s.
+    pub sidespin: f64,
+    /// Motion phase.
+    pub motion: Motion,
+}
+
+/// One ball after the impact.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BallAfter {
+    /// Just after the impact.
+    pub after_impact: MotionSummary,
+    /// Once its slip on the cloth has ended.
+    pub after_slip: MotionSummary,
+    /// Peak height of its hop, m (0: none).
+    pub hop_height: f64,
+    /// Length of the hop, m.
+    pub hop_length: f64,
+    /// Distance covered until the slip ends, m.
+    pub distance_to_end_of_slip: f64,
+    /// The rebound's angle from the cushion line, degrees (cushion impacts).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rebound_angle_deg: Option<f64>,
+}
+
+/// The report of one impact (`snooker impact --json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ImpactRecord {
+    /// What was asked.
+    pub input: ImpactInput,
+    /// The cue ball (ball-ball).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cue_ball: Option<BallAfter>,
+    /// The object ball (ball-ball).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub object_ball: Option<BallAfter>,
+    /// The ball (cushion).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball: Option<BallAfter>,
+    /// The normal impulse, N s.
+    pub impulse: f64,
+    /// The approach speed along the cushion's plan normal, m/s (cushion).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_speed: Option<f64>,
+    /// A reminder of the units.
+    pub units: String,
+}
+
 /// One ball's state, as reported.
-fn describe(s: &BallState) -> Value {
+fn describe(s: &BallState) -> MotionSummary {
     let v = Vec3::new(s.vel.x, s.vel.y, 0.0);
-    json!({
-        "speed": v.norm(),
-        "direction_deg": v.y.atan2(v.x).to_degrees(),
-        "vertical_speed": s.vel.z,
-        "spin": [s.spin.x, s.spin.y, s.spin.z],
-        "sidespin": s.spin.z,
-        "motion": s.motion.name(),
-    })
+    MotionSummary {
+        speed: v.norm(),
+        direction_deg: v.y.atan2(v.x).to_degrees(),
+        vertical_speed: s.vel.z,
+        spin: [s.spin.x, s.spin.y, s.spin.z],
+        sidespin: s.spin.z,
+        motion: s.motion,
+    }
 }
 
 /// What happens to a ball after an impact until its slip on the cloth ends, run by the engine
@@ -153,15 +251,16 @@ fn after_slip(s: BallState, p: &Params) -> Result<(BallState, f64, f64, f64), Si
 }
 
 /// The report of one ball after the impact.
-fn ball_report(s: BallState, p: &Params) -> Result<Map<String, Value>, SimError> {
+fn ball_report(s: BallState, p: &Params) -> Result<BallAfter, SimError> {
     let (rolled, hop_height, hop_length, dist) = after_slip(s, p)?;
-    let mut m = Map::new();
-    m.insert("after_impact".into(), describe(&motion::settle(s, p)));
-    m.insert("after_slip".into(), describe(&rolled));
-    m.insert("hop_height".into(), json!(hop_height));
-    m.insert("hop_length".into(), json!(hop_length));
-    m.insert("distance_to_end_of_slip".into(), json!(dist));
-    Ok(m)
+    Ok(BallAfter {
+        after_impact: describe(&motion::settle(s, p)),
+        after_slip: describe(&rolled),
+        hop_height,
+        hop_length,
+        distance_to_end_of_slip: dist,
+        rebound_angle_deg: None,
+    })
 }
 
 /// Checks the incoming ball of `spec`.
@@ -197,8 +296,33 @@ pub fn impact_report(
 ) -> Result<ImpactReport, ImpactReportError> {
     check(spec)?;
     let (p, speed) = (&spec.params, spec.speed);
-    let mut doc = Map::new();
-    let (setup, angle, axes) = match spec.geometry {
+    let (setup, angle) = match spec.geometry {
+        Geometry::BallBall { cut } => ("ball-ball", cut),
+        Geometry::Cushion { angle } => ("cushion", angle),
+    };
+    let mut doc = ImpactRecord {
+        input: ImpactInput {
+            setup: setup.into(),
+            speed,
+            angle_deg: angle,
+            topspin_v_over_r: spec.topspin,
+            sidespin_v_over_r: spec.sidespin,
+            mu_ball: p.mu_ball,
+            e_ball: p.e_ball,
+            mu_cushion: p.mu_cushion,
+            e_cushion: p.e_cushion,
+            mu_slide: p.mu_slide,
+        },
+        cue_ball: None,
+        object_ball: None,
+        ball: None,
+        impulse: 0.0,
+        normal_speed: None,
+        units: "SI; directions in degrees from the incoming ball's path (ball-ball) or the \
+                cushion line (cushion)"
+            .into(),
+    };
+    let axes = match spec.geometry {
         Geometry::BallBall { cut } => {
             let (cue, obj) =
                 incoming::ball_ball(speed, cut.to_radians(), spec.topspin, spec.sidespin, p);
@@ -209,14 +333,10 @@ pub fn impact_report(
                 ..*s
             };
             let n = (obj.pos - cue.pos).normalize();
-            doc.insert("cue_ball".into(), ball_report(after(&cue, 0), p)?.into());
-            doc.insert("object_ball".into(), ball_report(after(&obj, 1), p)?.into());
-            doc.insert("impulse".into(), json!(out.impulse));
-            (
-                "ball-ball",
-                cut,
-                (n.cross(&Vec3::z()).normalize(), Vec3::z()),
-            )
+            doc.cue_ball = Some(ball_report(after(&cue, 0), p)?);
+            doc.object_ball = Some(ball_report(after(&obj, 1), p)?);
+            doc.impulse = out.impulse;
+            (n.cross(&Vec3::z()).normalize(), Vec3::z())
         }
         Geometry::Cushion { angle } => {
             let rad = angle.to_radians();
@@ -228,38 +348,14 @@ pub fn impact_report(
                 ..ball
             };
             let n = cush::contact(&ball, Vec3::y(), p).normal;
-            let mut report = ball_report(b1, p)?;
-            report.insert(
-                "rebound_angle_deg".into(),
-                json!(b1.vel.y.atan2(b1.vel.x.abs()).to_degrees()),
-            );
-            doc.insert("ball".into(), report.into());
-            doc.insert("impulse".into(), json!(out.impulse));
-            doc.insert("normal_speed".into(), json!(speed * rad.sin()));
-            ("cushion", angle, (Vec3::x(), n.cross(&Vec3::x())))
+            doc.ball = Some(BallAfter {
+                rebound_angle_deg: Some(b1.vel.y.atan2(b1.vel.x.abs()).to_degrees()),
+                ..ball_report(b1, p)?
+            });
+            doc.impulse = out.impulse;
+            doc.normal_speed = Some(speed * rad.sin());
+            (Vec3::x(), n.cross(&Vec3::x()))
         }
     };
-    let input = json!({
-        "setup": setup,
-        "speed": speed,
-        "angle_deg": angle,
-        "topspin_v_over_r": spec.topspin,
-        "sidespin_v_over_r": spec.sidespin,
-        "mu_ball": p.mu_ball, "e_ball": p.e_ball, "mu_cushion": p.mu_cushion,
-        "e_cushion": p.e_cushion, "mu_slide": p.mu_slide,
-    });
-    let mut out = Map::new();
-    out.insert("input".into(), input);
-    out.extend(doc);
-    out.insert(
-        "units".into(),
-        json!(
-            "SI; directions in degrees from the incoming ball's path (ball-ball) or the cushion \
-             line (cushion)"
-        ),
-    );
-    Ok(ImpactReport {
-        doc: Value::Object(out),
-        axes,
-    })
+    Ok(ImpactReport { doc, axes })
 }

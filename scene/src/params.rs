@@ -1,5 +1,5 @@
-//! Parameter overrides: a scene's or a model file's `[params]`, and `--param NAME=VALUE` on the
-//! command line. Names, ranges and sources are the engine's one declaration
+//! Parameter overrides: a scene's or a model file's `[params]`, or overrides given by name.
+//! Names, ranges and sources are the engine's one declaration
 //! ([`snooker_engine::params::PARAMS`]).
 
 use crate::file::ParamOverrides;
@@ -25,77 +25,66 @@ impl ParamOverrides {
     }
 }
 
-/// A `--param NAME=VALUE` that cannot be used.
+/// A parameter override that cannot be used.
 #[derive(Clone, Debug, PartialEq)]
 pub enum OverrideError {
-    /// Not of the form NAME=VALUE.
-    Syntax(String),
-    /// The value is not a number.
-    NotANumber {
-        /// The whole override.
-        given: String,
-        /// Its value part.
-        value: String,
-    },
     /// No parameter has that name.
     Unknown {
-        /// The whole override.
-        given: String,
-        /// Its name part.
+        /// The name given.
         name: String,
     },
     /// The resulting parameters are out of range.
     Invalid(ParamError),
 }
 
+impl OverrideError {
+    /// The name of the parameter at fault, as given.
+    pub fn name(&self) -> &str {
+        match self {
+            OverrideError::Unknown { name } => name,
+            OverrideError::Invalid(e) => e.name,
+        }
+    }
+}
+
 impl std::fmt::Display for OverrideError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            OverrideError::Syntax(o) => write!(f, "--param {o}: expected NAME=VALUE"),
-            OverrideError::NotANumber { given, value } => {
-                write!(f, "--param {given}: {value} is not a number")
-            }
-            OverrideError::Unknown { given, name } => {
+            OverrideError::Unknown { name } => {
                 let known: Vec<&str> = PARAMS.iter().map(|i| i.name).collect();
                 write!(
                     f,
-                    "--param {given}: unknown parameter `{name}` (one of {})",
+                    "unknown parameter `{name}` (one of {})",
                     known.join(", ")
                 )
             }
-            OverrideError::Invalid(e) => write!(f, "--param {e}"),
+            OverrideError::Invalid(e) => write!(f, "{e}"),
         }
     }
 }
 
 impl std::error::Error for OverrideError {}
 
-/// Parses `NAME=VALUE` overrides (the scene files' names) into [`ParamOverrides`].
-pub fn parse_overrides(overrides: &[String]) -> Result<ParamOverrides, OverrideError> {
-    let mut out = Vec::new();
-    for o in overrides {
-        let (name, value) = o
-            .split_once('=')
-            .ok_or_else(|| OverrideError::Syntax(o.clone()))?;
-        let v: f64 = value
-            .trim()
-            .parse()
-            .map_err(|_| OverrideError::NotANumber {
-                given: o.clone(),
-                value: value.to_string(),
-            })?;
-        let info = Params::info(name.trim()).ok_or_else(|| OverrideError::Unknown {
-            given: o.clone(),
-            name: name.trim().to_string(),
-        })?;
-        out.push((info.name, v));
-    }
-    Ok(ParamOverrides(out))
+/// Overrides by name (the scene files' `[params]` names) as [`ParamOverrides`].
+pub fn overrides<S: AsRef<str>>(given: &[(S, f64)]) -> Result<ParamOverrides, OverrideError> {
+    given
+        .iter()
+        .map(|(name, v)| {
+            let name = name.as_ref().trim();
+            Params::info(name)
+                .map(|info| (info.name, *v))
+                .ok_or_else(|| OverrideError::Unknown { name: name.into() })
+        })
+        .collect::<Result<_, _>>()
+        .map(ParamOverrides)
 }
 
-/// Applies `NAME=VALUE` overrides to `base`, then validates the result.
-pub fn override_params(base: Params, overrides: &[String]) -> Result<Params, OverrideError> {
-    let p = parse_overrides(overrides)?.apply_to(base);
+/// `base` with the parameters named in `given` set to their values, then validated.
+pub fn override_params<S: AsRef<str>>(
+    base: Params,
+    given: &[(S, f64)],
+) -> Result<Params, OverrideError> {
+    let p = overrides(given)?.apply_to(base);
     p.validate().map_err(OverrideError::Invalid)?;
     Ok(p)
 }

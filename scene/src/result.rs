@@ -2,8 +2,10 @@
 //! the human summary printed by `snooker simulate`.
 
 use crate::Scene;
-use serde_json::{Map, Value, json};
-use snooker_engine::{BallState, EventKind, Shot};
+use serde::de::{MapAccess, Visitor};
+use serde::ser::SerializeMap;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use snooker_engine::{BallState, EventKind, Models, Motion, Shot};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -11,106 +13,277 @@ use std::fmt::Write as _;
 /// (thesis §5.1.2, §6.2.5: the cushion deforms; data file `rigid_limit_speed`).
 pub const CUSHION_RIGID_LIMIT: f64 = 2.5;
 
-fn state_json(s: &BallState) -> Value {
-    json!({
-        "pos": [s.pos.x, s.pos.y, s.pos.z],
-        "vel": [s.vel.x, s.vel.y, s.vel.z],
-        "spin": [s.spin.x, s.spin.y, s.spin.z],
-        "motion": s.motion.name(),
-    })
+/// A map from ball ids (or parameter names) to values that keeps its entries in the order
+/// given: the result lists balls in the scene's order and parameters in their declaration's,
+/// which scripts reading the JSON by eye rely on (a `HashMap` would shuffle them).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct OrderedMap<V>(pub Vec<(String, V)>);
+
+impl<V> OrderedMap<V> {
+    /// The value under `key`, if any.
+    pub fn get(&self, key: &str) -> Option<&V> {
+        self.0.iter().find(|(k, _)| k == key).map(|(_, v)| v)
+    }
 }
 
-/// The result document: `scene`, `events`, `final`, plus documented extensions.
-pub fn result_json(scene: &Scene, shot: &Shot) -> Value {
+impl<V: Serialize> Serialize for OrderedMap<V> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in &self.0 {
+            map.serialize_entry(k, v)?;
+        }
+        map.end()
+    }
+}
+
+impl<'de, V: Deserialize<'de>> Deserialize<'de> for OrderedMap<V> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Entries<V>(std::marker::PhantomData<V>);
+        impl<'de, V: Deserialize<'de>> Visitor<'de> for Entries<V> {
+            type Value = OrderedMap<V>;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a map")
+            }
+
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+                let mut out = Vec::new();
+                while let Some(entry) = map.next_entry()? {
+                    out.push(entry);
+                }
+                Ok(OrderedMap(out))
+            }
+        }
+        d.deserialize_map(Entries(std::marker::PhantomData))
+    }
+}
+
+/// A ball's state as the result gives it (formats.md: `pos`, `vel`, `spin`, `motion`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct BallRecord {
+    /// Centre, m.
+    pub pos: [f64; 3],
+    /// Velocity, m/s.
+    pub vel: [f64; 3],
+    /// Angular velocity, rad/s.
+    pub spin: [f64; 3],
+    /// Motion phase.
+    pub motion: Motion,
+}
+
+impl From<&BallState> for BallRecord {
+    fn from(s: &BallState) -> BallRecord {
+        BallRecord {
+            pos: [s.pos.x, s.pos.y, s.pos.z],
+            vel: [s.vel.x, s.vel.y, s.vel.z],
+            spin: [s.spin.x, s.spin.y, s.spin.z],
+            motion: s.motion,
+        }
+    }
+}
+
+/// One event (formats.md, plus `cushion`, `pocket`, `normal_speed`, `beyond_rigid_limit`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EventRecord {
+    /// Time from the start of the shot, s.
+    pub t: f64,
+    /// The event's kind by its contract name (`ball_ball`, `slide_to_roll`, ...).
+    #[serde(with = "event_kind_name")]
+    pub kind: EventKind,
+    /// The balls involved, by id.
+    pub balls: Vec<String>,
+    /// Their states just after the event.
+    pub after: OrderedMap<BallRecord>,
+    /// The pocket fallen into (`ball_pocket`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pocket: Option<String>,
+    /// The cushion nose, jaw or facing met or flown over (`ball_cushion`, `ball_off_table`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cushion: Option<String>,
+    /// Approach speed along the contact normal, m/s (impacts).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_speed: Option<f64>,
+    /// A cushion impact faster than the rigid model's limit (thesis §6.2.5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beyond_rigid_limit: Option<bool>,
+}
+
+/// An event kind by its contract name, both ways.
+mod event_kind_name {
+    use serde::{Deserialize, Deserializer, Serializer, de};
+    use snooker_engine::EventKind;
+
+    pub fn serialize<S: Serializer>(kind: &EventKind, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(kind.name())
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<EventKind, D::Error> {
+        let name = String::deserialize(d)?;
+        EventKind::from_name(&name)
+            .ok_or_else(|| de::Error::custom(format!("unknown event kind `{name}`")))
+    }
+}
+
+/// A pot: `{ball, pocket, t}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Pot {
+    /// The ball potted.
+    pub ball: String,
+    /// The pocket.
+    pub pocket: String,
+    /// When it dropped, s.
+    pub t: f64,
+}
+
+/// A ball that flew off the table: `{ball, cushion, t}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct OffTable {
+    /// The ball.
+    pub ball: String,
+    /// The cushion it flew over.
+    pub cushion: String,
+    /// When it crossed the nose, s.
+    pub t: f64,
+}
+
+/// The cue strike as the result reports it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StrikeRecord {
+    /// The ball struck.
+    pub ball: String,
+    /// Cue speed at impact, m/s.
+    pub cue_speed: f64,
+    /// Contact point relative to the ball's centre, m.
+    pub contact: [f64; 3],
+    /// Distance of the contact from the cue's axis, m.
+    pub contact_offset: f64,
+    /// Squirt angle, rad (positive: left of the heading).
+    pub squirt: f64,
+    /// Ball speed over cue speed.
+    pub speed_ratio: f64,
+    /// The ball's state just after the strike.
+    pub after: BallRecord,
+}
+
+/// The result document (formats.md "Result", extended): what `snooker simulate --json`
+/// writes, a batch's lines carry and Python reads.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShotRecord {
+    /// The scene's name.
+    pub scene: String,
+    /// Every event, in time order.
+    pub events: Vec<EventRecord>,
+    /// Every ball at the end, in the scene's order.
+    #[serde(rename = "final")]
+    pub final_states: OrderedMap<BallRecord>,
+    /// End of the shot, s.
+    pub duration: f64,
+    /// Every pot, in time order.
+    pub pots: Vec<Pot>,
+    /// Every ball that flew off the table, in time order.
+    pub off_table: Vec<OffTable>,
+    /// The impact models used.
+    pub models: Models,
+    /// Every parameter used, in their declaration's order.
+    pub params: OrderedMap<f64>,
+    /// The cue strike, if the scene has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub strike: Option<StrikeRecord>,
+    /// A reminder of the units and frame.
+    pub units: String,
+}
+
+/// The result document of `shot`, simulated from `scene`.
+pub fn result_record(scene: &Scene, shot: &Shot) -> ShotRecord {
     let ids: Vec<&str> = shot.tracks.iter().map(|t| t.id.as_str()).collect();
-    let events: Vec<Value> = shot
+    let events = shot
         .events
         .iter()
         .map(|e| {
-            let mut after = Map::new();
-            for (&b, s) in e.balls.iter().zip(&e.after) {
-                after.insert(ids[b].to_string(), state_json(s));
+            let feature = e.feature.clone();
+            let (pocket, cushion) = if e.kind == EventKind::BallPocket {
+                (feature, None)
+            } else {
+                (None, feature)
+            };
+            EventRecord {
+                t: e.t,
+                kind: e.kind,
+                balls: e.balls.iter().map(|&b| ids[b].to_string()).collect(),
+                after: OrderedMap(
+                    e.balls
+                        .iter()
+                        .zip(&e.after)
+                        .map(|(&b, s)| (ids[b].to_string(), s.into()))
+                        .collect(),
+                ),
+                pocket,
+                cushion,
+                normal_speed: e.normal_speed,
+                beyond_rigid_limit: e
+                    .normal_speed
+                    .filter(|_| e.kind == EventKind::BallCushion)
+                    .map(|v| v > CUSHION_RIGID_LIMIT),
             }
-            let mut ev = Map::new();
-            ev.insert("t".into(), json!(e.t));
-            ev.insert("kind".into(), json!(e.kind.name()));
-            ev.insert(
-                "balls".into(),
-                json!(e.balls.iter().map(|&b| ids[b]).collect::<Vec<_>>()),
-            );
-            ev.insert("after".into(), Value::Object(after));
-            if let Some(f) = &e.feature {
-                let key = if e.kind == EventKind::BallPocket {
-                    "pocket"
-                } else {
-                    "cushion"
-                };
-                ev.insert(key.into(), json!(f));
-            }
-            if let Some(v) = e.normal_speed {
-                ev.insert("normal_speed".into(), json!(v));
-                if e.kind == EventKind::BallCushion {
-                    ev.insert("beyond_rigid_limit".into(), json!(v > CUSHION_RIGID_LIMIT));
-                }
-            }
-            Value::Object(ev)
         })
         .collect();
-    let mut fin = Map::new();
-    for (id, s) in ids.iter().zip(shot.final_states()) {
-        fin.insert(id.to_string(), state_json(&s));
-    }
-    // Balls leaving play: {ball, pocket or cushion, t}.
-    let departures = |kind: EventKind, key: &str| -> Vec<Value> {
-        departures(shot, kind)
-            .map(|(ball, feature, t)| json!({"ball": ids[ball], key: feature, "t": t}))
-            .collect()
-    };
-    let pots = departures(EventKind::BallPocket, "pocket");
-    let off_table = departures(EventKind::BallOffTable, "cushion");
-    let mut doc = Map::new();
-    doc.insert("scene".into(), json!(scene.name));
-    doc.insert("events".into(), Value::Array(events));
-    doc.insert("final".into(), Value::Object(fin));
-    doc.insert("duration".into(), json!(shot.duration));
-    doc.insert("pots".into(), Value::Array(pots));
-    doc.insert("off_table".into(), Value::Array(off_table));
-    doc.insert(
-        "models".into(),
-        json!({
-            "ball_ball": scene.setup.models.ball_ball.name(),
-            "cushion": scene.setup.models.cushion.name(),
-        }),
+    let final_states = OrderedMap(
+        ids.iter()
+            .zip(shot.final_states())
+            .map(|(id, s)| (id.to_string(), (&s).into()))
+            .collect(),
     );
-    let params: Map<String, Value> = scene
-        .setup
-        .params
-        .named()
-        .iter()
-        .map(|(k, v)| (k.to_string(), json!(v)))
+    let pots = departures(shot, EventKind::BallPocket)
+        .map(|(ball, pocket, t)| Pot {
+            ball: ids[ball].into(),
+            pocket: pocket.into(),
+            t,
+        })
         .collect();
-    doc.insert("params".into(), Value::Object(params));
-    if let Some(struck) = &scene.strike {
-        let (ball, cue, s) = (&struck.id, &struck.cue, &struck.strike);
-        doc.insert(
-            "strike".into(),
-            json!({
-                "ball": ball,
-                "cue_speed": cue.speed,
-                "contact": [s.contact.x, s.contact.y, s.contact.z],
-                "contact_offset": s.contact_offset,
-                "squirt": s.squirt,
-                "speed_ratio": s.speed_ratio,
-                "after": state_json(&s.state),
-            }),
-        );
-    }
-    doc.insert(
-        "units".into(),
-        json!("SI: m, s, rad, m/s, rad/s; table frame, z up"),
+    let off_table = departures(shot, EventKind::BallOffTable)
+        .map(|(ball, cushion, t)| OffTable {
+            ball: ids[ball].into(),
+            cushion: cushion.into(),
+            t,
+        })
+        .collect();
+    let params = OrderedMap(
+        scene
+            .setup
+            .params
+            .named()
+            .iter()
+            .map(|(k, v)| (k.to_string(), *v))
+            .collect(),
     );
-    Value::Object(doc)
+    let strike = scene.strike.as_ref().map(|struck| {
+        let s = &struck.strike;
+        StrikeRecord {
+            ball: struck.id.clone(),
+            cue_speed: struck.cue.speed,
+            contact: [s.contact.x, s.contact.y, s.contact.z],
+            contact_offset: s.contact_offset,
+            squirt: s.squirt,
+            speed_ratio: s.speed_ratio,
+            after: (&s.state).into(),
+        }
+    });
+    ShotRecord {
+        scene: scene.name.clone(),
+        events,
+        final_states,
+        duration: shot.duration,
+        pots,
+        off_table,
+        models: scene.setup.models,
+        params,
+        strike,
+        units: UNITS.into(),
+    }
 }
+
+/// The units reminder of every result.
+pub const UNITS: &str = "SI: m, s, rad, m/s, rad/s; table frame, z up";
 
 /// A short human summary: events by kind, pots, final positions, simulated duration.
 pub fn summary(scene: &Scene, shot: &Shot) -> String {

@@ -165,6 +165,40 @@ mod tests {
     }
 
     #[test]
+    fn a_built_scene_written_reads_back_to_the_bit() {
+        use crate::{BallSpec, CueSpec, SceneFile};
+        let mut rng = Rng(0x5eed_0000_0000_0002);
+        for k in 0..500 {
+            let x = rng.uniform(0.1, 3.5);
+            let y = rng.uniform(0.1, 1.7);
+            let v = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), 0.0];
+            let scene = SceneFile::new()
+                .with_name(format!("built {k}"))
+                .with_param("mu_roll", rng.uniform(0.005, 0.02))
+                .with_ball(BallSpec::at("cue", [x, y]))
+                .with_ball(BallSpec::at("red", [3.4, 1.6]).with_vel(v))
+                .with_strike(
+                    CueSpec::new("cue", rng.uniform(0.5, 5.0), rng.uniform(-3.0, 3.0))
+                        .with_offset([rng.uniform(-0.005, 0.005), 0.0]),
+                );
+            let direct = scene.clone().build("built").unwrap();
+            let from_toml = crate::parse(&scene.to_toml(), "built").unwrap();
+            let from_json = crate::parse_json(&scene.to_json().unwrap(), "built").unwrap();
+            assert_eq!(direct.setup, from_toml.setup, "{}", scene.to_toml());
+            assert_eq!(direct.setup, from_json.setup);
+            assert_eq!(direct.strike, from_toml.strike);
+            assert_eq!(direct.name, from_toml.name);
+        }
+        // An unknown parameter is refused by build as a file's is when read.
+        let e = SceneFile::new()
+            .with_param("mu_rol", 0.01)
+            .with_ball(BallSpec::at("cue", [1.0, 1.0]))
+            .build("built")
+            .unwrap_err();
+        assert_eq!(e.key, "params.mu_rol");
+    }
+
+    #[test]
     fn a_scene_from_parts_reads_back_to_the_bit() {
         let mut rng = Rng(0x0bad_5eed_0000_0001);
         for _ in 0..500 {

@@ -3,12 +3,11 @@
 //! slip on the cloth has ended, and an optional plot of the slips against the normal impulse
 //! (thesis figs. 6.14, 6.15, 6.23).
 
-use super::bad_input;
+use super::{bad_input, spec};
 use crate::plot;
-use serde_json::Value;
 use snooker_engine::Params;
 use snooker_engine::impact::impulse::Sample;
-use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
+use snooker_scene::impact_report::{Geometry, ImpactRecord, ImpactSpec, impact_report};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -67,7 +66,7 @@ enum Kind {
 pub fn run(args: Args) -> ExitCode {
     let (doc, samples, axes) = match impact(&args) {
         Ok(r) => r,
-        Err(e) => return bad_input(format!("{e:#}")),
+        Err(e) => return bad_input(e),
     };
     if args.json {
         outln!(
@@ -90,8 +89,8 @@ pub fn run(args: Args) -> ExitCode {
 
 /// The result document (the scene crate's impact report), the samples for a plot and their
 /// axes.
-fn impact(args: &Args) -> anyhow::Result<(Value, Vec<Sample>, plot::SlipAxes)> {
-    let params = snooker_scene::override_params(Params::default(), &args.params)?;
+fn impact(args: &Args) -> Result<(ImpactRecord, Vec<Sample>, plot::SlipAxes), String> {
+    let params = spec::params(Params::default(), &args.params)?;
     let (inc, geometry) = match &args.which {
         Kind::BallBall { incoming, cut } => (incoming, Geometry::BallBall { cut: *cut }),
         Kind::Cushion { incoming, angle } => (incoming, Geometry::Cushion { angle: *angle }),
@@ -104,68 +103,59 @@ fn impact(args: &Args) -> anyhow::Result<(Value, Vec<Sample>, plot::SlipAxes)> {
         params,
     };
     let mut trace = Vec::new();
-    let report = impact_report(&spec, Some(&mut trace))?;
+    let report = impact_report(&spec, Some(&mut trace)).map_err(|e| match e.field() {
+        // The message begins with the input's name: the command's flag for it.
+        Some(_) => format!("--{e}"),
+        None => e.to_string(),
+    })?;
     Ok((report.doc, trace, report.axes))
 }
 
 /// A text rendering of the result document.
-fn text(doc: &Value) -> String {
+fn text(doc: &ImpactRecord) -> String {
     let mut s = String::new();
-    let input = &doc["input"];
+    let input = &doc.input;
     let _ = writeln!(
         s,
-        "{} impact at {:.3} m/s, {:.2} deg, topspin {} V/R, sidespin {} V/R",
-        input["setup"].as_str().unwrap_or("?"),
-        input["speed"].as_f64().unwrap_or(0.0),
-        input["angle_deg"].as_f64().unwrap_or(0.0),
-        input["topspin_v_over_r"],
-        input["sidespin_v_over_r"]
+        "{} impact at {:.3} m/s, {:.2} deg, topspin {:?} V/R, sidespin {:?} V/R",
+        input.setup, input.speed, input.angle_deg, input.topspin_v_over_r, input.sidespin_v_over_r
     );
-    for ball in ["cue_ball", "object_ball", "ball"] {
-        let b = &doc[ball];
-        if b.is_null() {
-            continue;
-        }
-        let _ = writeln!(s, "{}:", ball.replace('_', " "));
-        for (label, key) in [
-            ("  after the impact", "after_impact"),
-            ("  after the slip  ", "after_slip"),
+    for (name, ball) in [
+        ("cue ball", &doc.cue_ball),
+        ("object ball", &doc.object_ball),
+        ("ball", &doc.ball),
+    ] {
+        let Some(b) = ball else { continue };
+        let _ = writeln!(s, "{name}:");
+        for (label, st) in [
+            ("  after the impact", &b.after_impact),
+            ("  after the slip  ", &b.after_slip),
         ] {
-            let st = &b[key];
-            let spin: Vec<f64> = st["spin"]
-                .as_array()
-                .map(|a| a.iter().filter_map(|x| x.as_f64()).collect())
-                .unwrap_or_default();
             let _ = writeln!(
                 s,
                 "{label}: speed {:.4} m/s, direction {:+.2} deg, spin ({:.2}, {:.2}, {:.2}) rad/s, {}",
-                st["speed"].as_f64().unwrap_or(0.0),
-                st["direction_deg"].as_f64().unwrap_or(0.0),
-                spin.first().copied().unwrap_or(0.0),
-                spin.get(1).copied().unwrap_or(0.0),
-                spin.get(2).copied().unwrap_or(0.0),
-                st["motion"].as_str().unwrap_or("?")
+                st.speed,
+                st.direction_deg,
+                st.spin[0],
+                st.spin[1],
+                st.spin[2],
+                st.motion.name()
             );
         }
-        let h = b["hop_height"].as_f64().unwrap_or(0.0);
-        if h > 0.0 {
+        if b.hop_height > 0.0 {
             let _ = writeln!(
                 s,
                 "  hop: {:.3} mm high, {:.1} mm long",
-                h * 1e3,
-                b["hop_length"].as_f64().unwrap_or(0.0) * 1e3
+                b.hop_height * 1e3,
+                b.hop_length * 1e3
             );
         }
         let _ = writeln!(
             s,
             "  slip ends {:.1} mm from the impact",
-            b["distance_to_end_of_slip"].as_f64().unwrap_or(0.0) * 1e3
+            b.distance_to_end_of_slip * 1e3
         );
     }
-    let _ = writeln!(
-        s,
-        "normal impulse: {:.6} N s",
-        doc["impulse"].as_f64().unwrap_or(0.0)
-    );
+    let _ = writeln!(s, "normal impulse: {:.6} N s", doc.impulse);
     s
 }

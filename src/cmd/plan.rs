@@ -7,7 +7,10 @@ use crate::{output, record};
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_engine::Vec3;
-use snooker_planner::{self as planner, Bounds, Noise, Plan, PlanError, Problem, Request};
+use snooker_planner::{
+    self as planner, Bounds, Interval, Noise, NoiseComponent, Plan, PlanError, Problem, Request,
+    RequestField, StrikeVariable,
+};
 use snooker_scene as scene;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -87,6 +90,83 @@ fn parse_target(s: &str) -> Result<[f64; 2], String> {
     }
 }
 
+/// The flag (and the part of its spec) a request field comes from: the planner names its
+/// own fields, the command names what its user typed.
+fn flag(field: RequestField) -> String {
+    match field {
+        RequestField::CueBall => "--cue-ball".into(),
+        RequestField::Pot => "--pot".into(),
+        RequestField::Pocket => "--pocket".into(),
+        RequestField::Target => "--cue-to".into(),
+        RequestField::Tolerance => "--tolerance".into(),
+        RequestField::Samples => "--samples".into(),
+        RequestField::Bounds(v) => format!("--bounds {}", v.name()),
+        RequestField::Noise(c) => format!("--noise {}", c.name()),
+    }
+}
+
+/// A planner error as the command says it: the field named by its flag.
+fn plan_error(e: &PlanError) -> String {
+    match e {
+        PlanError::BadInput { field, reason } => format!("{}: {reason}", flag(*field)),
+        PlanError::CannotPot(why) => why.clone(),
+    }
+}
+
+/// `bounds` with the intervals of `spec` ("speed=0.3..6,elevation=0..0,side=-0.01..0.01,
+/// height=..."); the planner checks them against the engine's limits.
+fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
+    for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let syntax = || format!("--bounds {part}: expected NAME=LO..HI");
+        let (name, range) = part.split_once('=').ok_or_else(syntax)?;
+        let (lo, hi) = range.split_once("..").ok_or_else(syntax)?;
+        let var = StrikeVariable::from_name(name.trim()).ok_or_else(|| {
+            format!(
+                "--bounds {part}: unknown variable `{}` (speed, elevation, side, height)",
+                name.trim()
+            )
+        })?;
+        let num = |s: &str| {
+            s.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("--bounds {part}: `{s}` is not a finite number"))
+        };
+        bounds.set(
+            var,
+            Interval {
+                lo: num(lo)?,
+                hi: num(hi)?,
+            },
+        );
+    }
+    Ok(bounds)
+}
+
+/// `noise` with the standard deviations of `spec` ("aim=0.002,speed=0.02,offset=0.001").
+fn parse_noise(spec: &str, mut noise: Noise) -> Result<Noise, String> {
+    for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let (name, value) = part
+            .split_once('=')
+            .ok_or_else(|| format!("--noise {part}: expected NAME=VALUE"))?;
+        let c = NoiseComponent::from_name(name.trim()).ok_or_else(|| {
+            format!(
+                "--noise {part}: unknown noise `{}` (aim, speed, offset)",
+                name.trim()
+            )
+        })?;
+        let v = value
+            .trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite() && *v >= 0.0)
+            .ok_or_else(|| format!("--noise {part}: expected a finite number >= 0"))?;
+        noise.set(c, v);
+    }
+    Ok(noise)
+}
+
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let file = args.scene.display().to_string();
@@ -103,11 +183,14 @@ pub fn run(args: Args) -> ExitCode {
         Ok(t) => t,
         Err(e) => return bad_input(format!("--cue-to: {e}")),
     };
-    let noise = match Noise::default().with_spec(args.noise.as_deref().unwrap_or("")) {
+    let noise = match parse_noise(args.noise.as_deref().unwrap_or(""), Noise::default()) {
         Ok(n) => n,
         Err(e) => return bad_input(e),
     };
-    let bounds = match Bounds::default_for(&p).with_spec(args.bounds.as_deref().unwrap_or(""), &p) {
+    let bounds = match parse_bounds(
+        args.bounds.as_deref().unwrap_or(""),
+        Bounds::default_for(&p),
+    ) {
         Ok(b) => b,
         Err(e) => return bad_input(e),
     };
@@ -136,12 +219,12 @@ pub fn run(args: Args) -> ExitCode {
     };
     let problem = match Problem::new(&scene, request) {
         Ok(pr) => pr,
-        Err(e) => return bad_input(e),
+        Err(e) => return bad_input(plan_error(&e)),
     };
     let plan = match with_progress(&problem, &scene.name, args.quiet) {
         Ok(plan) => plan,
-        Err(e @ PlanError::BadInput { .. }) => return bad_input(e),
-        Err(e @ PlanError::CannotPot(_)) => return failed(format!("{file}: {e}")),
+        Err(e @ PlanError::BadInput { .. }) => return bad_input(plan_error(&e)),
+        Err(e @ PlanError::CannotPot(_)) => return failed(format!("{file}: {}", plan_error(&e))),
     };
     // The contract: the scene written replays the planned shot to the bit. Checked here.
     let out_text = match planner::scene_out::with_strike(&text, &plan.best.strike) {

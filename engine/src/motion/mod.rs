@@ -113,6 +113,18 @@ pub enum Transition {
 }
 
 impl Transition {
+    /// Every transition, in declaration order.
+    pub const ALL: [Transition; 8] = [
+        Transition::SlideToRoll,
+        Transition::SlideToSpin,
+        Transition::SlideToStop,
+        Transition::RollToSpin,
+        Transition::RollToStop,
+        Transition::SpinToStop,
+        Transition::Landing,
+        Transition::Refresh,
+    ];
+
     /// The event kind name used in the JSON result.
     pub fn name(self) -> &'static str {
         match self {

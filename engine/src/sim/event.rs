@@ -31,6 +31,19 @@ impl EventKind {
             EventKind::Transition(t) => t.name(),
         }
     }
+
+    /// The kind of that JSON name, the inverse of [`EventKind::name`].
+    pub fn from_name(name: &str) -> Option<EventKind> {
+        [
+            EventKind::BallBall,
+            EventKind::BallCushion,
+            EventKind::BallPocket,
+            EventKind::BallOffTable,
+        ]
+        .into_iter()
+        .chain(Transition::ALL.map(EventKind::Transition))
+        .find(|k| k.name() == name)
+    }
 }
 
 /// One event of a shot.
