@@ -12,8 +12,12 @@ use rand::rngs::ChaCha8Rng;
 use snooker_engine::ball::ROLLING_SHARE;
 use snooker_engine::cue::{self, Cue, MAX_CUE_SPEED, MAX_ELEVATION};
 use snooker_engine::params::{Bound, MAX_TILT_PER_MU_ROLL, NOSE_HEIGHT_PER_RADIUS, PARAMS};
-use snooker_engine::{BallState, Params, SnookerDims, Table, Vec3};
-use snooker_scene::write::{BallText, CueText, SceneText, num};
+use snooker_engine::{
+    BallBallModel, BallState, CushionModel, Params, SnookerDims, Table, TableKind, Vec3,
+};
+use snooker_scene::file::{ModelSpec, Numbers, ParamOverrides};
+use snooker_scene::write::num;
+use snooker_scene::{BallSpec, CueSpec, SceneFile};
 use std::f64::consts::{PI, TAU};
 
 /// What kind of scene.
@@ -168,7 +172,7 @@ struct Gen<'a> {
     rng: &'a mut ChaCha8Rng,
     p: Params,
     table: Table,
-    scene: SceneText,
+    scene: SceneFile,
     /// Centres placed so far.
     placed: Vec<Vec3>,
 }
@@ -203,12 +207,7 @@ impl Gen<'_> {
 
     fn add(&mut self, id: String, pos: Vec3) {
         self.placed.push(Vec3::new(pos.x, pos.y, 0.0));
-        self.scene.balls.push(BallText {
-            id,
-            pos: [pos.x, pos.y],
-            vel: None,
-            spin: None,
-        });
+        self.scene.balls.push(BallSpec::at(id, [pos.x, pos.y]));
     }
 
     fn next_id(&self) -> String {
@@ -225,7 +224,7 @@ impl Gen<'_> {
     }
 
     fn extent(&self) -> (f64, f64) {
-        if self.scene.open_table {
+        if self.scene.table.kind == TableKind::Open {
             (3.0, 1.5)
         } else {
             (self.table.length, self.table.width)
@@ -315,9 +314,9 @@ impl Gen<'_> {
     /// The state ball `i` of the scene starts in (before any strike).
     fn state_of(&self, i: usize) -> BallState {
         let b = &self.scene.balls[i];
-        let mut s = BallState::at_rest(b.pos[0], b.pos[1], self.r());
-        s.vel = Vec3::from(b.vel.unwrap_or_default());
-        s.spin = Vec3::from(b.spin.unwrap_or_default());
+        let mut s = BallState::at_rest(b.pos.0[0], b.pos.0[1], self.r());
+        s.vel = Vec3::from(b.vel.map(|v| v.0).unwrap_or_default());
+        s.spin = Vec3::from(b.spin.map(|w| w.0).unwrap_or_default());
         s
     }
 
@@ -364,15 +363,11 @@ impl Gen<'_> {
             return false;
         }
         let id = self.scene.balls[i].id.clone();
-        self.scene.cue = Some((
-            id,
-            CueText {
-                speed: c.speed,
-                aim: c.aim,
-                offset: c.offset,
-                elevation: c.elevation,
-            },
-        ));
+        self.scene.cue = Some(
+            CueSpec::new(id, c.speed, c.aim)
+                .with_offset(c.offset)
+                .with_elevation(c.elevation),
+        );
         true
     }
 
@@ -441,7 +436,7 @@ impl Gen<'_> {
     /// 4 m/s), at 0.3-25 m/s, with any spin.
     fn throw_at(&mut self, i: usize, target: Vec3) {
         let b = &self.scene.balls[i];
-        let from = Vec3::new(b.pos[0], b.pos[1], 0.0);
+        let from = Vec3::new(b.pos.0[0], b.pos.0[1], 0.0);
         let Some(dir) = (target - from).try_normalize(1e-9) else {
             return;
         };
@@ -459,8 +454,8 @@ impl Gen<'_> {
             * (1.5 * speed / self.r()).min(99.0 / self.r())
             / 3f64.sqrt();
         let b = &mut self.scene.balls[i];
-        b.vel = Some([speed * dir.x, speed * dir.y, vz]);
-        b.spin = Some([w.x, w.y, w.z]);
+        b.vel = Some(Numbers([speed * dir.x, speed * dir.y, vz]));
+        b.spin = Some(Numbers([w.x, w.y, w.z]));
     }
 
     /// Balls thrown at the pockets' openings, jaws and noses, in the air and on the cloth,
@@ -511,7 +506,7 @@ impl Gen<'_> {
         self.place(others, true);
         if self.chance(0.3) {
             let (a, v) = (self.u(-PI, PI), self.u(0.0, 3.0));
-            self.scene.balls[0].vel = Some([v * a.cos(), v * a.sin(), self.u(0.0, 2.0)]);
+            self.scene.balls[0].vel = Some(Numbers([v * a.cos(), v * a.sin(), self.u(0.0, 2.0)]));
         }
         if self.chance(0.3) {
             self.cue_parameters();
@@ -537,7 +532,7 @@ impl Gen<'_> {
     /// The cue's parameters (and the squirt's end mass) anywhere in their ranges.
     fn cue_parameters(&mut self) {
         let mut p = self.p;
-        let mut set = std::mem::take(&mut self.scene.params);
+        let mut set = std::mem::take(&mut self.scene.params.0);
         for name in [
             "cue_mass",
             "cue_tip_radius",
@@ -561,12 +556,13 @@ impl Gen<'_> {
         }
         if p.validate().is_ok() {
             self.p = p;
-            self.scene.params = set;
+            self.scene.params = ParamOverrides(set);
         } else {
-            self.scene.params = set
-                .into_iter()
-                .filter(|(n, _)| !n.starts_with("cue_") && *n != "miscue_limit")
-                .collect();
+            self.scene.params = ParamOverrides(
+                set.into_iter()
+                    .filter(|(n, _)| !n.starts_with("cue_") && *n != "miscue_limit")
+                    .collect(),
+            );
         }
     }
 
@@ -629,8 +625,8 @@ impl Gen<'_> {
                 )
             };
             let b = &mut self.scene.balls[i];
-            b.vel = Some([v.x, v.y, 0.0]);
-            b.spin = Some([w.x, w.y, w.z]);
+            b.vel = Some(Numbers([v.x, v.y, 0.0]));
+            b.spin = Some(Numbers([w.x, w.y, w.z]));
         }
     }
 
@@ -643,7 +639,7 @@ impl Gen<'_> {
                 .scene
                 .cue
                 .as_ref()
-                .is_some_and(|(id, _)| *id == self.scene.balls[i].id)
+                .is_some_and(|c| c.ball == self.scene.balls[i].id)
             {
                 continue;
             }
@@ -665,8 +661,8 @@ impl Gen<'_> {
             let w = Vec3::new(self.u(-1.0, 1.0), self.u(-1.0, 1.0), self.u(-1.0, 1.0));
             let w = w * (spin_scale / r).min(99.0 / r) / 3f64.sqrt();
             let b = &mut self.scene.balls[i];
-            b.vel = Some([speed * a.cos(), speed * a.sin(), vz]);
-            b.spin = Some([w.x, w.y, w.z]);
+            b.vel = Some(Numbers([speed * a.cos(), speed * a.sin(), vz]));
+            b.spin = Some(Numbers([w.x, w.y, w.z]));
         }
     }
 
@@ -727,24 +723,26 @@ impl Gen<'_> {
         }
         if p.validate().is_ok() {
             self.p = p;
-            self.scene.params = set;
+            self.scene.params = ParamOverrides(set);
         }
         if self.chance(0.3) {
             let pick = |g: &mut Self| {
                 if g.chance(0.5) {
-                    "frictionless"
+                    BallBallModel::Frictionless
                 } else {
-                    "mathavan"
+                    BallBallModel::Mathavan
                 }
             };
             // The cushion also as the compliant one (issue 25).
             let cushion = match self.rng.random_range(0..3) {
-                0 => "frictionless",
-                1 => "mathavan",
-                _ => "compliant",
+                0 => CushionModel::Frictionless,
+                1 => CushionModel::Mathavan,
+                _ => CushionModel::Compliant,
             };
-            let models = (pick(self), cushion);
-            self.scene.models = Some(models);
+            self.scene.models = ModelSpec {
+                ball_ball: Some(pick(self)),
+                cushion: Some(cushion),
+            };
         }
     }
 }
@@ -755,7 +753,7 @@ pub fn generate(kind: Kind, rng: &mut ChaCha8Rng) -> Generated {
         rng,
         p: Params::default(),
         table: Table::snooker(&SnookerDims::default()),
-        scene: SceneText::default(),
+        scene: SceneFile::new(),
         placed: Vec::new(),
     };
     match kind {
@@ -791,7 +789,7 @@ pub fn generate(kind: Kind, rng: &mut ChaCha8Rng) -> Generated {
             }
         }
         Kind::Cradle => {
-            g.scene.open_table = true;
+            g.scene.table.kind = TableKind::Open;
             g.table = Table::open();
             // Mostly short lines; one in fifty as long as a full table's length (68 balls) and
             // beyond (a line of n takes about n^3 / 20 impacts: one of 80 costs as much as a
@@ -807,27 +805,17 @@ pub fn generate(kind: Kind, rng: &mut ChaCha8Rng) -> Generated {
                 g.add(id, Vec3::new(k as f64 * 2.0 * r, 0.0, 0.0));
             }
             let speed = g.u(0.1, 10.0);
-            g.scene.cue = Some((
-                "cue".into(),
-                CueText {
-                    speed,
-                    aim: 0.0,
-                    offset: [0.0, 0.0],
-                    elevation: 0.0,
-                },
-            ));
+            g.scene.cue = Some(CueSpec::new("cue", speed, 0.0));
         }
         Kind::BreakOff => {
             g.scene.layout = Some("break-off".into());
             let dims = SnookerDims::default();
             let brown = dims.spot("brown").unwrap_or_default();
             // The layout's cue ball; the strike is checked against it.
-            g.scene.balls.push(BallText {
-                id: "cue".into(),
-                pos: [brown.x, brown.y - 0.5 * dims.d_radius],
-                vel: None,
-                spin: None,
-            });
+            g.scene.balls.push(BallSpec::at(
+                "cue",
+                [brown.x, brown.y - 0.5 * dims.d_radius],
+            ));
             g.strike();
             g.scene.balls.clear();
         }
