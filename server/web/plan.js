@@ -150,6 +150,8 @@ export class PlanPanel {
     lab.table.drawPaths(view.alternatives, "alternatives", "alt-path");
     lab.table.drawPaths(view.best.paths);
     lab.listEvents(view.best.result);
+    lab.shot = view.best;
+    $("replay").disabled = false;
     this.drawChoice();
     const p = view.plan;
     const rows = [["best", p.best], ...p.alternatives.map((a, i) => [`alt ${i + 1}`, a])];

@@ -115,7 +115,7 @@ export class Table {
       marks: el("g", { id: "marks" }, g),
       alternatives: el("g", { id: "alternatives" }, g),
       paths: el("g", { id: "paths" }, g),
-      aim: el("g", { id: "aim" }, g),
+      aim: el("g", { id: "aim-layer" }, g),
       balls: el("g", { id: "balls" }, g),
     };
     this.setBalls(balls);
