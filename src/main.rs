@@ -2,7 +2,9 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, batch, discrepancy, impact, plan, referee, serve, simulate, synth, validate};
+use snooker::cmd::{
+    self, batch, discrepancy, impact, plan, referee, serve, simulate, synth, validate,
+};
 use std::process::ExitCode;
 
 #[derive(Parser)]

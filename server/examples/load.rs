@@ -21,7 +21,9 @@ fn arg(n: usize, default: usize) -> usize {
 #[tokio::main(flavor = "multi_thread")]
 async fn main() -> std::process::ExitCode {
     let (clients, plans, samples, rounds) = (arg(1, 64), arg(2, 4), arg(3, 64), arg(4, 10));
-    println!("{rounds} rounds of {clients} simulations and {plans} plans ({samples} samples) at once");
+    println!(
+        "{rounds} rounds of {clients} simulations and {plans} plans ({samples} samples) at once"
+    );
     let mut r = load::run(clients, plans, samples, rounds).await;
     let (sim_max, plan_max) = (
         load::quantile(&mut r.simulate_times, 1.0),
@@ -41,7 +43,11 @@ async fn main() -> std::process::ExitCode {
         load::quantile(&mut r.plan_times, 0.95),
         plan_max
     );
-    let mb: Vec<String> = r.rss_kb.iter().map(|k| format!("{:.1}", *k as f64 / 1024.0)).collect();
+    let mb: Vec<String> = r
+        .rss_kb
+        .iter()
+        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
+        .collect();
     println!("resident memory after each round, MB: {}", mb.join(", "));
     println!("wall time {:.1} s; errors: {}", r.wall, r.errors.len());
     for e in r.errors.iter().take(10) {

@@ -6,21 +6,61 @@ use axum::response::{IntoResponse, Response};
 
 /// The files served: path, content type, bytes.
 const FILES: [(&str, &str, &str); 9] = [
-    ("/", "text/html; charset=utf-8", include_str!("../web/index.html")),
-    ("/style.css", "text/css; charset=utf-8", include_str!("../web/style.css")),
-    ("/app.js", "text/javascript; charset=utf-8", include_str!("../web/app.js")),
-    ("/api.js", "text/javascript; charset=utf-8", include_str!("../web/api.js")),
-    ("/table.js", "text/javascript; charset=utf-8", include_str!("../web/table.js")),
-    ("/strike.js", "text/javascript; charset=utf-8", include_str!("../web/strike.js")),
-    ("/plan.js", "text/javascript; charset=utf-8", include_str!("../web/plan.js")),
-    ("/play.js", "text/javascript; charset=utf-8", include_str!("../web/play.js")),
-    ("/favicon.svg", "image/svg+xml", include_str!("../web/favicon.svg")),
+    (
+        "/",
+        "text/html; charset=utf-8",
+        include_str!("../web/index.html"),
+    ),
+    (
+        "/style.css",
+        "text/css; charset=utf-8",
+        include_str!("../web/style.css"),
+    ),
+    (
+        "/app.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/app.js"),
+    ),
+    (
+        "/api.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/api.js"),
+    ),
+    (
+        "/table.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/table.js"),
+    ),
+    (
+        "/strike.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/strike.js"),
+    ),
+    (
+        "/plan.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/plan.js"),
+    ),
+    (
+        "/play.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/play.js"),
+    ),
+    (
+        "/favicon.svg",
+        "image/svg+xml",
+        include_str!("../web/favicon.svg"),
+    ),
 ];
 
 /// The asset at `path`, or 404.
 pub fn asset(path: &str) -> Response {
     let path = if path == "/index.html" { "/" } else { path };
-    let path = if path == "/favicon.ico" { "/favicon.svg" } else { path };
+    let path = if path == "/favicon.ico" {
+        "/favicon.svg"
+    } else {
+        path
+    };
     match FILES.iter().find(|(p, _, _)| *p == path) {
         Some((_, kind, body)) => {
             let mut r = (*body).into_response();

@@ -121,7 +121,9 @@ impl Job {
             state: name,
             shots: self.shots(),
             note: lock(&self.note).clone(),
-            waited: started.map_or(self.created.elapsed(), |s| s - self.created).as_secs_f64(),
+            waited: started
+                .map_or(self.created.elapsed(), |s| s - self.created)
+                .as_secs_f64(),
             elapsed: started.map_or(0.0, |s| s.elapsed().as_secs_f64()),
             result,
             error,

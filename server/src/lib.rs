@@ -190,11 +190,9 @@ async fn layout(
 ) -> Result<Json<Position>, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
     let limits = lab.limits;
-    lab.light(move || {
-        position::layout(&name, q.reds.unwrap_or(15), q.seed.unwrap_or(1), &limits)
-    })
-    .await
-    .map(Json)
+    lab.light(move || position::layout(&name, q.reds.unwrap_or(15), q.seed.unwrap_or(1), &limits))
+        .await
+        .map(Json)
 }
 
 #[derive(Deserialize)]
@@ -221,7 +219,10 @@ struct FrameReq {
     rate: Option<f64>,
 }
 
-async fn scene_check(State(lab): Shared, Body(req): Body<SceneReq>) -> Result<Json<Position>, ApiError> {
+async fn scene_check(
+    State(lab): Shared,
+    Body(req): Body<SceneReq>,
+) -> Result<Json<Position>, ApiError> {
     let limits = lab.limits;
     lab.light(move || position::of_scene(&input::scene(&req.scene, &limits)?))
         .await
@@ -249,7 +250,10 @@ async fn scene_import(
     .map(Json)
 }
 
-async fn frame_check(State(lab): Shared, Body(req): Body<FrameReq>) -> Result<Json<Position>, ApiError> {
+async fn frame_check(
+    State(lab): Shared,
+    Body(req): Body<FrameReq>,
+) -> Result<Json<Position>, ApiError> {
     let limits = lab.limits;
     lab.light(move || position::of_frame_file(&input::frame(&req.frame, &limits)?))
         .await
@@ -286,7 +290,10 @@ fn attachment(bytes: Vec<u8>, name: &str, kind: &'static str) -> Response {
     r
 }
 
-async fn download_scene(State(lab): Shared, Body(req): Body<SceneReq>) -> Result<Response, ApiError> {
+async fn download_scene(
+    State(lab): Shared,
+    Body(req): Body<SceneReq>,
+) -> Result<Response, ApiError> {
     let limits = lab.limits;
     let (name, text) = lab
         .light(move || {
@@ -294,18 +301,32 @@ async fn download_scene(State(lab): Shared, Body(req): Body<SceneReq>) -> Result
             Ok((checked.scene.name.clone(), checked.file.to_toml()))
         })
         .await?;
-    Ok(attachment(text.into_bytes(), &format!("{name}.toml"), "application/toml"))
+    Ok(attachment(
+        text.into_bytes(),
+        &format!("{name}.toml"),
+        "application/toml",
+    ))
 }
 
-async fn download_result(State(lab): Shared, Body(req): Body<SceneReq>) -> Result<Response, ApiError> {
+async fn download_result(
+    State(lab): Shared,
+    Body(req): Body<SceneReq>,
+) -> Result<Response, ApiError> {
     let limits = lab.limits;
     let (name, text) = lab
         .light(move || {
             let checked = input::scene(&req.scene, &limits)?;
-            Ok((checked.scene.name.clone(), shot::result_json(&checked, input::SCENE)?))
+            Ok((
+                checked.scene.name.clone(),
+                shot::result_json(&checked, input::SCENE)?,
+            ))
         })
         .await?;
-    Ok(attachment(text.into_bytes(), &format!("{name}.json"), "application/json"))
+    Ok(attachment(
+        text.into_bytes(),
+        &format!("{name}.json"),
+        "application/json",
+    ))
 }
 
 async fn download_recording(
@@ -326,7 +347,11 @@ async fn download_recording(
             Ok((checked.scene.name.clone(), bytes))
         })
         .await?;
-    Ok(attachment(bytes, &format!("{name}.rrd"), "application/octet-stream"))
+    Ok(attachment(
+        bytes,
+        &format!("{name}.rrd"),
+        "application/octet-stream",
+    ))
 }
 
 async fn plan(

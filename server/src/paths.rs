@@ -156,7 +156,10 @@ mod tests {
         // The last sample is where the ball ends (or where it left play).
         for (p, s) in paths.balls.iter().zip(shot.final_states()) {
             if s.motion.in_play() {
-                assert_eq!([*p.x.last().unwrap(), *p.y.last().unwrap()], [s.pos.x, s.pos.y]);
+                assert_eq!(
+                    [*p.x.last().unwrap(), *p.y.last().unwrap()],
+                    [s.pos.x, s.pos.y]
+                );
             } else {
                 assert!(p.gone_at.is_some());
             }
@@ -170,7 +173,11 @@ mod tests {
         let n: usize = full.balls.iter().map(|p| p.t.len()).sum();
         let cut = sample(&shot, 240.0, n / 4);
         let m: usize = cut.balls.iter().map(|p| p.t.len()).sum();
-        assert!(cut.rate < 240.0 && m <= n / 4, "{m} points of {n}, rate {}", cut.rate);
+        assert!(
+            cut.rate < 240.0 && m <= n / 4,
+            "{m} points of {n}, rate {}",
+            cut.rate
+        );
         assert!(full.rate == 240.0);
     }
 }

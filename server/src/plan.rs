@@ -95,7 +95,10 @@ pub fn check(req: PlanRequest, limits: &Limits) -> Result<Checked, ApiError> {
             return Err(ApiError::bad(
                 REQUEST,
                 "tolerance",
-                format!("{t} m: the server plans to {} m at the finest", limits.plan_tolerance),
+                format!(
+                    "{t} m: the server plans to {} m at the finest",
+                    limits.plan_tolerance
+                ),
             ));
         }
         request.tolerance = t;
@@ -108,7 +111,12 @@ pub fn check(req: PlanRequest, limits: &Limits) -> Result<Checked, ApiError> {
     }
     if let Some(n) = req.alternatives {
         if n > limits.plan_alternatives {
-            return Err(too_many("alternatives", "alternatives", n, limits.plan_alternatives));
+            return Err(too_many(
+                "alternatives",
+                "alternatives",
+                n,
+                limits.plan_alternatives,
+            ));
         }
         request.alternatives = n;
     }

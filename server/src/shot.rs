@@ -43,7 +43,10 @@ pub fn rate(rate: Option<f64>, limits: &Limits) -> Result<f64, ApiError> {
         Some(r) => Err(ApiError::bad(
             crate::body::REQUEST,
             "rate",
-            format!("the sample rate must lie in (0, {}] Hz, got {r}", limits.path_rate),
+            format!(
+                "the sample rate must lie in (0, {}] Hz, got {r}",
+                limits.path_rate
+            ),
         )),
     }
 }

@@ -27,7 +27,8 @@ async fn call(app: &Router, method: &str, path: &str, body: Option<Value>) -> (S
     let r = app.clone().oneshot(req).await.unwrap();
     let status = r.status();
     let bytes = r.into_body().collect().await.unwrap().to_bytes();
-    let v = serde_json::from_slice(&bytes).unwrap_or(Value::String(String::from_utf8_lossy(&bytes).into()));
+    let v = serde_json::from_slice(&bytes)
+        .unwrap_or(Value::String(String::from_utf8_lossy(&bytes).into()));
     (status, v)
 }
 
@@ -40,7 +41,10 @@ async fn raw(app: &Router, method: &str, path: &str, body: Vec<u8>) -> (StatusCo
         .unwrap();
     let r = app.clone().oneshot(req).await.unwrap();
     let status = r.status();
-    (status, r.into_body().collect().await.unwrap().to_bytes().to_vec())
+    (
+        status,
+        r.into_body().collect().await.unwrap().to_bytes().to_vec(),
+    )
 }
 
 const CUT_30: &str = include_str!("../../scenes/cut-30.toml");
@@ -53,7 +57,13 @@ fn scene_json(text: &str) -> Value {
 #[tokio::test]
 async fn the_simulated_result_is_the_command_lines() {
     let app = app();
-    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": scene_json(CUT_30)}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(CUT_30)})),
+    )
+    .await;
     assert_eq!(s, StatusCode::OK, "{v}");
     // What `snooker simulate cut-30.toml --json` writes: the scene crate's reader, the engine,
     // the result record.
@@ -90,7 +100,8 @@ async fn the_scene_downloaded_reads_back_to_the_same_shot() {
     // The layout is expanded: every ball listed, so the page can move any of them.
     assert_eq!(pos["scene"]["balls"].as_array().unwrap().len(), 22);
     let mut scene = pos["scene"].clone();
-    scene["cue"] = json!({"ball": "cue", "speed": 5.0, "aim": 0.03, "offset": [0.0, 0.0], "elevation": 0.0});
+    scene["cue"] =
+        json!({"ball": "cue", "speed": 5.0, "aim": 0.03, "offset": [0.0, 0.0], "elevation": 0.0});
     let (s, toml_bytes) = raw(
         &app,
         "POST",
@@ -113,29 +124,54 @@ async fn bad_input_is_400_with_the_command_lines_message() {
     // Overlapping balls, as a pasted file: the message `snooker simulate` prints.
     let text = "name = \"bad\"\n[[balls]]\nid = \"cue\"\npos = [0.5, 0.4]\n[[balls]]\nid = \"red\"\npos = [0.51, 0.4]\n";
     let cli = snooker_scene::parse(text, "bad.toml").unwrap_err();
-    let (s, v) = call(&app, "POST", "/api/scene/import", Some(json!({"toml": text, "name": "bad.toml"}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/scene/import",
+        Some(json!({"toml": text, "name": "bad.toml"})),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(v["message"], cli.to_string());
     assert_eq!(v["key"], cli.key);
     assert_eq!(v["file"], "bad.toml");
     // The same scene as JSON: the key at fault, in the scene.
-    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": scene_json(text)}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(text)})),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
-    assert_eq!((v["file"].as_str(), v["key"].as_str()), (Some("scene"), Some(cli.key.as_str())));
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("scene"), Some(cli.key.as_str()))
+    );
     // An unknown key of the scene and of the request.
     let mut bad = scene_json(CUT_30);
     bad["balls"][0]["colour"] = json!("white");
     let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": bad}))).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(v["key"], "balls[0].colour", "{v}");
-    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": scene_json(CUT_30), "speed": 3}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(CUT_30), "speed": 3})),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(v["file"], "request", "{v}");
     // A plan's own keys.
     let plan = json!({"scene": scene_json(CUT_30), "pot": "red", "pocket": "nowhere", "target": [1.0, 0.5]});
     let (s, v) = call(&app, "POST", "/api/plan", Some(plan)).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
-    assert_eq!((v["file"].as_str(), v["key"].as_str()), (Some("request"), Some("pocket")), "{v}");
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("request"), Some("pocket")),
+        "{v}"
+    );
     // Not JSON.
     let (s, _) = raw(&app, "POST", "/api/simulate", b"{\"scene\": ".to_vec()).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
@@ -149,15 +185,23 @@ async fn requests_are_bounded() {
         plan_samples: 64,
         ..Limits::default()
     };
-    let app = router(Config { limits, recorder: None });
+    let app = router(Config {
+        limits,
+        recorder: None,
+    });
     // A body over the limit is refused before it is read whole.
     let (s, _) = raw(&app, "POST", "/api/simulate", vec![b' '; 10_000]).await;
     assert_eq!(s, StatusCode::PAYLOAD_TOO_LARGE);
     // Too many balls.
-    let four = scene_json("[[balls]]\nid = \"cue\"\npos = [0.5, 0.4]\n[[balls]]\nid = \"red1\"\npos = [1.0, 0.4]\n[[balls]]\nid = \"red2\"\npos = [1.5, 0.4]\n[[balls]]\nid = \"red3\"\npos = [2.0, 0.4]\n");
+    let four = scene_json(
+        "[[balls]]\nid = \"cue\"\npos = [0.5, 0.4]\n[[balls]]\nid = \"red1\"\npos = [1.0, 0.4]\n[[balls]]\nid = \"red2\"\npos = [1.5, 0.4]\n[[balls]]\nid = \"red3\"\npos = [2.0, 0.4]\n",
+    );
     let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": four}))).await;
     assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
-    assert_eq!((v["file"].as_str(), v["key"].as_str()), (Some("scene"), Some("balls")));
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("scene"), Some("balls"))
+    );
     // Too many samples.
     let plan = json!({"scene": scene_json(CUT_30), "pot": "red", "pocket": "top-right", "target": [1.0, 0.5], "samples": 65});
     let (s, v) = call(&app, "POST", "/api/plan", Some(plan)).await;
@@ -166,18 +210,39 @@ async fn requests_are_bounded() {
     // A shot asking for more simulated time than the server gives is held to the server's:
     // cut-30 moves for 6 s, so with 0.5 s it cannot finish (422, not a hang).
     let short = router(Config {
-        limits: Limits { sim_time: 0.5, ..Limits::default() },
+        limits: Limits {
+            sim_time: 0.5,
+            ..Limits::default()
+        },
         recorder: None,
     });
     let mut long = scene_json(CUT_30);
     long["sim"] = json!({"max_time": 3600.0});
-    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": long.clone()}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": long.clone()})),
+    )
+    .await;
     assert_eq!(s, StatusCode::OK, "{v}");
-    let (s, v) = call(&short, "POST", "/api/simulate", Some(json!({"scene": long}))).await;
+    let (s, v) = call(
+        &short,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": long})),
+    )
+    .await;
     assert_eq!(s, StatusCode::UNPROCESSABLE_ENTITY, "{v}");
     assert_eq!(v["file"], "scene", "{v}");
     // No recordings without a recorder.
-    let (s, _) = call(&app, "POST", "/api/download/recording", Some(json!({"scene": scene_json(CUT_30)}))).await;
+    let (s, _) = call(
+        &app,
+        "POST",
+        "/api/download/recording",
+        Some(json!({"scene": scene_json(CUT_30)})),
+    )
+    .await;
     assert_eq!(s, StatusCode::NOT_FOUND);
 }
 
@@ -185,10 +250,21 @@ async fn requests_are_bounded() {
 async fn files_named_by_a_request_are_never_read() {
     let app = app();
     // A file name is only a label in messages.
-    let (s, v) = call(&app, "POST", "/api/scene/import", Some(json!({"toml": "", "name": "/etc/hostname"}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/scene/import",
+        Some(json!({"toml": "", "name": "/etc/hostname"})),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
     // Only the built-in assets are served.
-    for p in ["/../Cargo.toml", "/server/src/lib.rs", "/%2e%2e/Cargo.toml", "/etc/passwd"] {
+    for p in [
+        "/../Cargo.toml",
+        "/server/src/lib.rs",
+        "/%2e%2e/Cargo.toml",
+        "/etc/passwd",
+    ] {
         let (s, _) = call(&app, "GET", p, None).await;
         assert_eq!(s, StatusCode::NOT_FOUND, "{p}");
     }
@@ -225,7 +301,12 @@ async fn a_plan_is_a_job_that_replays_and_can_be_cancelled() {
     // The scene written replays the best shot (as `snooker simulate` of --scene-out does).
     let scene = snooker_scene::parse(r["scene_toml"].as_str().unwrap(), "planned.toml").unwrap();
     let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
-    let cue = scene.setup.balls.iter().position(|b| b.id == "cue").unwrap();
+    let cue = scene
+        .setup
+        .balls
+        .iter()
+        .position(|b| b.id == "cue")
+        .unwrap();
     let end = shot.final_states()[cue].pos;
     assert_eq!(json!([end.x, end.y]), r["plan"]["best"]["cue_final"]);
     assert!(r["plan"]["best"]["potted"].as_bool().unwrap());
@@ -253,12 +334,18 @@ async fn a_job_outliving_its_wall_time_is_cancelled() {
         job_time: Duration::from_millis(200),
         ..Limits::default()
     };
-    let app = router(Config { limits, recorder: None });
+    let app = router(Config {
+        limits,
+        recorder: None,
+    });
     let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
     let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
     let end = wait(&app, v["id"].as_u64().unwrap()).await;
     assert_eq!(end["state"], "cancelled", "{end}");
-    assert!(end["reason"].as_str().unwrap().contains("wall-time limit"), "{end}");
+    assert!(
+        end["reason"].as_str().unwrap().contains("wall-time limit"),
+        "{end}"
+    );
 }
 
 #[tokio::test]
@@ -270,19 +357,33 @@ async fn a_stroke_of_a_frame_is_judged_by_the_rules_crate() {
     let mut frame = pos["scene"].clone();
     assert_eq!(frame["balls"][0]["id"], "cue");
     frame["frame"] = pos["frame"].clone();
-    frame["cue"] = json!({"ball": "cue", "speed": 6.0, "aim": 0.05, "offset": [0.0, 0.0], "elevation": 0.0});
-    let (s, v) = call(&app, "POST", "/api/frame/stroke", Some(json!({"frame": frame}))).await;
+    frame["cue"] =
+        json!({"ball": "cue", "speed": 6.0, "aim": 0.05, "offset": [0.0, 0.0], "elevation": 0.0});
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/frame/stroke",
+        Some(json!({"frame": frame})),
+    )
+    .await;
     assert_eq!(s, StatusCode::OK, "{v}");
     // The rules crate on the same frame, as `snooker referee` reads it.
     let file = snooker_rules::from_value(&frame, "frame").unwrap();
     let shot = snooker_engine::simulate(&file.scene.setup, &file.scene.options).unwrap();
     let verdict = file.frame.judge(&shot).unwrap();
-    let want = serde_json::to_value(verdict.report::<snooker_scene::result::ShotRecord>(None)).unwrap();
+    let want =
+        serde_json::to_value(verdict.report::<snooker_scene::result::ShotRecord>(None)).unwrap();
     assert_eq!(v["referee"], want);
     assert!(v["next"].is_object());
     // A frame with its strike missing names the key.
     frame.as_object_mut().unwrap().remove("cue");
-    let (s, v) = call(&app, "POST", "/api/frame/stroke", Some(json!({"frame": frame}))).await;
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/frame/stroke",
+        Some(json!({"frame": frame})),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(v["key"], "cue");
 }

@@ -69,7 +69,10 @@ pub fn run(args: Args) -> ExitCode {
         let url = format!("http://{local}/");
         eprintln!("the shot lab is at {url} (Ctrl-C stops it)");
         if !args.host.is_loopback() {
-            eprintln!("warning: listening on {}: anyone who reaches it can use the lab", args.host);
+            eprintln!(
+                "warning: listening on {}: anyone who reaches it can use the lab",
+                args.host
+            );
         }
         if args.open {
             open(&url);

@@ -42,10 +42,19 @@ pub fn rss_kb() -> u64 {
 }
 
 /// One request on a fresh connection: status and JSON body.
-async fn request(addr: SocketAddr, method: &str, path: &str, body: Option<&Value>) -> Result<(u16, Value), String> {
-    let stream = tokio::net::TcpStream::connect(addr).await.map_err(|e| e.to_string())?;
+async fn request(
+    addr: SocketAddr,
+    method: &str,
+    path: &str,
+    body: Option<&Value>,
+) -> Result<(u16, Value), String> {
+    let stream = tokio::net::TcpStream::connect(addr)
+        .await
+        .map_err(|e| e.to_string())?;
     let io = hyper_util::rt::TokioIo::new(stream);
-    let (mut sender, conn) = hyper::client::conn::http1::handshake(io).await.map_err(|e| e.to_string())?;
+    let (mut sender, conn) = hyper::client::conn::http1::handshake(io)
+        .await
+        .map_err(|e| e.to_string())?;
     tokio::spawn(conn);
     let bytes = body.map(|b| b.to_string()).unwrap_or_default();
     let req = hyper::Request::builder()
@@ -57,7 +66,12 @@ async fn request(addr: SocketAddr, method: &str, path: &str, body: Option<&Value
         .map_err(|e| e.to_string())?;
     let resp = sender.send_request(req).await.map_err(|e| e.to_string())?;
     let status = resp.status().as_u16();
-    let body = resp.into_body().collect().await.map_err(|e| e.to_string())?.to_bytes();
+    let body = resp
+        .into_body()
+        .collect()
+        .await
+        .map_err(|e| e.to_string())?
+        .to_bytes();
     let v = serde_json::from_slice(&body).map_err(|e| format!("{path}: not JSON: {e}"))?;
     Ok((status, v))
 }
@@ -78,14 +92,21 @@ fn shots() -> Vec<Value> {
     .map(|t| scene(t))
     .collect();
     let mut brk = scene("layout = \"break-off\"");
-    brk["cue"] = json!({"ball": "cue", "speed": 7.0, "aim": 0.02, "offset": [0.0, 0.0], "elevation": 0.0});
+    brk["cue"] =
+        json!({"ball": "cue", "speed": 7.0, "aim": 0.02, "offset": [0.0, 0.0], "elevation": 0.0});
     out.push(brk);
     out
 }
 
 async fn simulate(addr: SocketAddr, scene: Value) -> Result<f64, String> {
     let t = Instant::now();
-    let (s, v) = request(addr, "POST", "/api/simulate", Some(&json!({"scene": scene}))).await?;
+    let (s, v) = request(
+        addr,
+        "POST",
+        "/api/simulate",
+        Some(&json!({"scene": scene})),
+    )
+    .await?;
     if s != 200 {
         return Err(format!("simulate: HTTP {s}: {v}"));
     }
@@ -121,10 +142,14 @@ async fn plan(addr: SocketAddr, samples: usize) -> Result<f64, String> {
 /// Serves the lab on a loopback port and runs `rounds` rounds of `clients` concurrent
 /// simulations and `plans` concurrent plans of `samples` samples each.
 pub async fn run(clients: usize, plans: usize, samples: usize, rounds: usize) -> Report {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.expect("bind");
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
+        .await
+        .expect("bind");
     let addr = listener.local_addr().expect("addr");
     let server = tokio::spawn(async move {
-        axum::serve(listener, router(Config::default())).await.expect("serve");
+        axum::serve(listener, router(Config::default()))
+            .await
+            .expect("serve");
     });
     let shots = shots();
     let mut report = Report::default();
