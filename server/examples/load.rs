@@ -24,7 +24,14 @@ async fn main() -> std::process::ExitCode {
     println!(
         "{rounds} rounds of {clients} simulations and {plans} plans ({samples} samples) at once"
     );
-    let mut r = load::run(clients, plans, samples, rounds).await;
+    let mut r = load::run(
+        snooker_server::Limits::default(),
+        clients,
+        plans,
+        samples,
+        rounds,
+    )
+    .await;
     let (sim_max, plan_max) = (
         load::quantile(&mut r.simulate_times, 1.0),
         load::quantile(&mut r.plan_times, 1.0),

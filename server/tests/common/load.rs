@@ -6,7 +6,7 @@
 use http_body_util::{BodyExt, Full};
 use hyper::body::Bytes;
 use serde_json::{Value, json};
-use snooker_server::{Config, router};
+use snooker_server::{Config, Limits, router};
 use std::net::SocketAddr;
 use std::time::{Duration, Instant};
 
@@ -139,17 +139,29 @@ async fn plan(addr: SocketAddr, samples: usize) -> Result<f64, String> {
     }
 }
 
-/// Serves the lab on a loopback port and runs `rounds` rounds of `clients` concurrent
-/// simulations and `plans` concurrent plans of `samples` samples each.
-pub async fn run(clients: usize, plans: usize, samples: usize, rounds: usize) -> Report {
+/// Serves the lab with `limits` on a loopback port and runs `rounds` rounds of `clients`
+/// concurrent simulations and `plans` concurrent plans of `samples` samples each.
+pub async fn run(
+    limits: Limits,
+    clients: usize,
+    plans: usize,
+    samples: usize,
+    rounds: usize,
+) -> Report {
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
         .await
         .expect("bind");
     let addr = listener.local_addr().expect("addr");
     let server = tokio::spawn(async move {
-        axum::serve(listener, router(Config::default()))
-            .await
-            .expect("serve");
+        axum::serve(
+            listener,
+            router(Config {
+                limits,
+                recorder: None,
+            }),
+        )
+        .await
+        .expect("serve");
     });
     let shots = shots();
     let mut report = Report::default();
