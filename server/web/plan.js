@@ -27,7 +27,12 @@ export class PlanPanel {
     const keepPk = pk.value;
     pk.replaceChildren(...pockets.map((n) => new Option(n, n)));
     if (pockets.includes(keepPk)) pk.value = keepPk;
+    // A new position starts a new choice: nothing picked, no target, no plan.
     this.result = null;
+    this.picked = false;
+    $("target-x").value = "";
+    $("target-y").value = "";
+    $("plan-status").textContent = "";
     $("plan-result").replaceChildren();
     $("play-plan").disabled = true;
     this.drawChoice();
