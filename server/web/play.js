@@ -73,8 +73,11 @@ export class PlayPanel {
       this.strokes += 1;
       this.showVerdict(v.referee);
       lab.showShot(v.shot, () => {
-        if (v.next) lab.setPosition(v.next, "the frame after the stroke");
-        else this.over(v.referee);
+        if (v.next) {
+          lab.setPosition(v.next, "the frame after the stroke");
+          // The stroke's paths stay drawn over the position it left.
+          lab.table.drawPaths(v.shot.paths);
+        } else this.over(v.referee);
       });
       lab.status(v.referee.legal ? "legal stroke" : `foul: ${v.referee.foul.reason}`);
     } catch (e) {
@@ -96,7 +99,7 @@ export class PlayPanel {
       : `Foul (${r.foul.reason}, ${r.foul.points} to the opponent): ${first}, ${potted}. Scores ${r.scores[0]}–${r.scores[1]}.`;
     d.replaceChildren(p);
     const li = document.createElement("li");
-    li.textContent = `${this.strokes}. ${p.textContent}`;
+    li.textContent = p.textContent;
     $("strokes").appendChild(li);
   }
 
