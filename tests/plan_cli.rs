@@ -58,6 +58,10 @@ fn the_chapter_7_plan_replays_exactly_through_simulate() {
     assert!(best["distance"].as_f64().unwrap() <= 0.001);
     let rob = &best["robustness"];
     assert_eq!(rob["samples"].as_u64(), Some(32));
+    // The default noise is the tournaments' standard, in the contract's keys and the new ones.
+    assert_eq!(rob["noise"]["speed"].as_f64(), Some(0.075));
+    assert_eq!(rob["noise"]["offset"].as_f64(), Some(0.0005));
+    assert_eq!(rob["noise"]["side"].as_f64(), Some(0.0005));
     let prob = rob["pot_probability"].as_f64().unwrap();
     assert!((0.0..=1.0).contains(&prob));
     // The scene written replays the planned shot: the same final cue-ball position, to the bit.
@@ -156,6 +160,13 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
         (format!("{ok} --cue-to 2.01,1.0"), "--cue-to"),
         (format!("{ok} --cue-to 1;1"), "--cue-to"),
         (format!("{ok} --cue-to 1,1 --noise aim=x"), "--noise"),
+        (format!("{ok} --cue-to 1,1 --noise blur=0.1"), "--noise"),
+        (format!("{ok} --cue-to 1,1 --noise standard*-1"), "--noise"),
+        // The old spelling: speed as a fraction beside one offset is refused, not misread.
+        (
+            format!("{ok} --cue-to 1,1 --noise aim=0.002,speed=0.02,offset=0.001"),
+            "m/s",
+        ),
         (
             format!("{ok} --cue-to 1,1 --bounds speed=0.3..40"),
             "--bounds",

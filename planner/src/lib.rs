@@ -24,6 +24,7 @@
 //! ```
 
 pub mod aim;
+pub mod noise;
 pub mod problem;
 pub mod reachable;
 pub mod robust;
@@ -35,6 +36,7 @@ pub use problem::{
     Bounds, Interval, Noise, NoiseComponent, PlanError, Problem, Request, RequestField,
     StrikeVariable,
 };
+pub use noise::{StrikeErrors, execute, rng_for};
 pub use robust::Robustness;
 pub use trial::{Fault, Route, Trial};
 

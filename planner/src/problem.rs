@@ -6,6 +6,8 @@ use snooker_engine::{Params, Setup, SimOptions, Vec3};
 use snooker_scene::Scene;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+pub use crate::noise::{Noise, NoiseComponent};
+
 /// A field of a planning request, as errors name it: the library speaks of the request's own
 /// fields (`pot`, `bounds.speed`, `noise.aim`), and each front end says how its user spelled
 /// them (a command-line flag, a Python argument).
@@ -88,40 +90,6 @@ impl StrikeVariable {
     /// The variable of that name.
     pub fn from_name(name: &str) -> Option<StrikeVariable> {
         Self::ALL.into_iter().find(|v| v.name() == name)
-    }
-}
-
-/// A component of the execution noise ([`Noise`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum NoiseComponent {
-    /// Heading, rad.
-    Aim,
-    /// Speed, a fraction of the speed.
-    Speed,
-    /// Each tip offset, m.
-    Offset,
-}
-
-impl NoiseComponent {
-    /// All of them.
-    pub const ALL: [NoiseComponent; 3] = [
-        NoiseComponent::Aim,
-        NoiseComponent::Speed,
-        NoiseComponent::Offset,
-    ];
-
-    /// Its name (`aim`, `speed`, `offset`).
-    pub fn name(self) -> &'static str {
-        match self {
-            NoiseComponent::Aim => "aim",
-            NoiseComponent::Speed => "speed",
-            NoiseComponent::Offset => "offset",
-        }
-    }
-
-    /// The component of that name.
-    pub fn from_name(name: &str) -> Option<NoiseComponent> {
-        Self::ALL.into_iter().find(|c| c.name() == name)
     }
 }
 
@@ -262,63 +230,6 @@ impl Bounds {
     }
 }
 
-/// How far a strike may stray from the one intended: independent normal errors with these
-/// standard deviations. Default: the command's example, a steady player's cue (a robot's is
-/// a matter of measurement: thesis §7.1.3).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Noise {
-    /// Heading, rad.
-    pub aim: f64,
-    /// Speed, as a fraction of the speed (0.02 = 2 %).
-    pub speed: f64,
-    /// Each tip offset, m.
-    pub offset: f64,
-}
-
-impl Default for Noise {
-    fn default() -> Noise {
-        Noise {
-            aim: 0.002,
-            speed: 0.02,
-            offset: 0.001,
-        }
-    }
-}
-
-impl Noise {
-    /// The standard deviation of component `c`.
-    pub fn get(&self, c: NoiseComponent) -> f64 {
-        match c {
-            NoiseComponent::Aim => self.aim,
-            NoiseComponent::Speed => self.speed,
-            NoiseComponent::Offset => self.offset,
-        }
-    }
-
-    /// Sets the standard deviation of component `c`.
-    pub fn set(&mut self, c: NoiseComponent, value: f64) {
-        match c {
-            NoiseComponent::Aim => self.aim = value,
-            NoiseComponent::Speed => self.speed = value,
-            NoiseComponent::Offset => self.offset = value,
-        }
-    }
-
-    /// Checks every standard deviation: a finite number, at least 0.
-    pub fn check(&self) -> Result<(), PlanError> {
-        for c in NoiseComponent::ALL {
-            let v = self.get(c);
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(bad(
-                    RequestField::Noise(c),
-                    format!("expected a finite number >= 0, got {v}"),
-                ));
-            }
-        }
-        Ok(())
-    }
-}
-
 /// A planning request, by name (as the command takes it).
 #[derive(Debug, Clone)]
 pub struct Request {
@@ -345,8 +256,8 @@ pub struct Request {
 }
 
 impl Request {
-    /// A request with the default bounds (for `p`), noise, 256 samples, 3 alternatives and
-    /// a 1 mm tolerance.
+    /// A request with the default bounds (for `p`), the standard noise ([`Noise::STANDARD`]),
+    /// 256 samples, 3 alternatives and a 1 mm tolerance.
     pub fn new(pot: &str, pocket: &str, target: [f64; 2], p: &Params) -> Request {
         Request {
             cue_ball: "cue".into(),

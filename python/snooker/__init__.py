@@ -208,7 +208,7 @@ def plan(
     pocket: str,
     cue_to: Sequence[float],
     tolerance: float = 0.001,
-    noise: Optional[dict] = None,
+    noise: Union[None, str, float, dict] = None,
     bounds: Optional[dict] = None,
     samples: int = 256,
     alternatives: int = 3,
@@ -219,8 +219,12 @@ def plan(
     in ``pocket`` and leaves the cue ball nearest ``cue_to`` (x, y in m), ranked by its pot
     probability under execution noise. Returns the plan document (formats.md, "Plan").
 
-    ``noise``: standard deviations, e.g. ``{"aim": 0.002, "speed": 0.02, "offset": 0.001}``
-    (rad, fraction of the speed, m); ``bounds``: intervals, e.g. ``{"speed": (0.3, 6.0)}``
+    ``noise``: the execution noise: ``"standard"`` (the default: the computational pool
+    tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
+    0.5 mm), ``0`` (none), or a dict of standard deviations changing the standard noise, e.g.
+    ``{"aim": 0.002, "speed": 0.04}`` (keys ``aim``, ``elevation`` rad, ``speed`` m/s,
+    ``side``, ``height`` m; ``offset`` sets both side and height; before, ``speed`` was a
+    fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``: intervals, e.g. ``{"speed": (0.3, 6.0)}``
     (keys ``speed`` m/s, ``elevation`` rad, ``side`` and ``height`` m). Bad requests raise
     ``ValueError`` naming the argument (``noise['aim']``, ``cue_to``); a ball that cannot be
     potted raises ``CannotPot``.
@@ -233,7 +237,7 @@ def plan(
         pocket,
         [x, y],
         float(tolerance),
-        {k: float(v) for k, v in (noise or {}).items()},
+        _noise(noise),
         {k: (float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()},
         int(samples),
         int(alternatives),
@@ -241,6 +245,20 @@ def plan(
         cue_ball,
     )
     return json.loads(text)
+
+
+def _noise(noise) -> dict:
+    """The noise argument as the extension takes it: standard deviations by name, changing
+    the standard noise."""
+    if noise is None or (isinstance(noise, str) and noise == "standard"):
+        return {}
+    if isinstance(noise, str):
+        raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+    if isinstance(noise, dict):
+        return {str(k): float(v) for k, v in noise.items()}
+    if float(noise) == 0.0:
+        return {k: 0.0 for k in ("aim", "elevation", "speed", "side", "height")}
+    raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
 
 
 def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> dict:

@@ -208,7 +208,8 @@ fn argument(field: RequestField) -> String {
 }
 
 /// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as JSON text.
-/// `noise` maps `aim`, `speed`, `offset` to standard deviations; `bounds` maps `speed`,
+/// `noise` maps `aim`, `elevation`, `speed`, `side`, `height` (rad, m/s, m; `offset` for both
+/// side and height) to standard deviations changing the standard noise; `bounds` maps `speed`,
 /// `elevation`, `side`, `height` to (low, high).
 #[pyfunction]
 #[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise=None, bounds=None,
@@ -244,10 +245,23 @@ fn plan(
         seed,
         ..Request::new(pot, pocket, cue_to, &p)
     };
-    for (name, sd) in noise.unwrap_or_default() {
+    let noise = noise.unwrap_or_default();
+    if noise.contains_key("offset") && noise.contains_key("speed") {
+        return Err(PyValueError::new_err(
+            "noise: the old spelling (speed as a fraction of the cue speed, one offset) is no \
+             longer read: speed is now in m/s (the old speed=F at cue speed V is F*V) and \
+             offset is side and height",
+        ));
+    }
+    for (name, sd) in noise {
+        if name == "offset" {
+            request.noise.side = sd;
+            request.noise.height = sd;
+            continue;
+        }
         let c = NoiseComponent::from_name(&name).ok_or_else(|| {
             PyValueError::new_err(format!(
-                "noise['{name}']: unknown noise (aim, speed, offset)"
+                "noise['{name}']: unknown noise (aim, elevation, speed, side, height; or offset)"
             ))
         })?;
         request.noise.set(c, sd);

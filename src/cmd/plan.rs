@@ -2,13 +2,13 @@
 //! (thesis chapter 7), with its robustness to execution noise and genuinely different
 //! alternatives; the scene with that strike, the plan as JSON, and a recording.
 
-use super::{bad_input, failed};
+use super::{bad_input, failed, spec};
 use crate::{output, record};
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_engine::Vec3;
 use snooker_planner::{
-    self as planner, Bounds, Interval, Noise, NoiseComponent, Plan, PlanError, Problem, Request,
+    self as planner, Bounds, Interval, Noise, Plan, PlanError, Problem, Request,
     RequestField, StrikeVariable,
 };
 use snooker_scene as scene;
@@ -34,8 +34,11 @@ pub struct Args {
     /// Distance to the target that counts as reached, m.
     #[arg(long, default_value_t = 0.001)]
     pub tolerance: f64,
-    /// Execution noise (standard deviations): aim in rad, speed as a fraction of the speed,
-    /// offset in m; e.g. "aim=0.002,speed=0.02,offset=0.001" (the default).
+    /// Execution noise (standard deviations): "standard" (the default: the computational pool
+    /// tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
+    /// 0.5 mm), "standard*K", "0", or NAME=VALUE items changing it (aim, elevation in rad,
+    /// speed in m/s, side, height in m), e.g. "0,aim=0.002". Before, speed was a fraction of
+    /// the cue speed and offset one value for both offsets: offset=M is still side=M,height=M.
     #[arg(long, value_name = "SPEC")]
     pub noise: Option<String>,
     /// Monte Carlo samples per shot for its pot probability.
@@ -144,29 +147,6 @@ fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
     Ok(bounds)
 }
 
-/// `noise` with the standard deviations of `spec` ("aim=0.002,speed=0.02,offset=0.001").
-fn parse_noise(spec: &str, mut noise: Noise) -> Result<Noise, String> {
-    for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-        let (name, value) = part
-            .split_once('=')
-            .ok_or_else(|| format!("--noise {part}: expected NAME=VALUE"))?;
-        let c = NoiseComponent::from_name(name.trim()).ok_or_else(|| {
-            format!(
-                "--noise {part}: unknown noise `{}` (aim, speed, offset)",
-                name.trim()
-            )
-        })?;
-        let v = value
-            .trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|v| v.is_finite() && *v >= 0.0)
-            .ok_or_else(|| format!("--noise {part}: expected a finite number >= 0"))?;
-        noise.set(c, v);
-    }
-    Ok(noise)
-}
-
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let file = args.scene.display().to_string();
@@ -183,7 +163,7 @@ pub fn run(args: Args) -> ExitCode {
         Ok(t) => t,
         Err(e) => return bad_input(format!("--cue-to: {e}")),
     };
-    let noise = match parse_noise(args.noise.as_deref().unwrap_or(""), Noise::default()) {
+    let noise = match spec::noise("--noise", args.noise.as_deref().unwrap_or(""), Noise::STANDARD) {
         Ok(n) => n,
         Err(e) => return bad_input(e),
     };
