@@ -308,7 +308,7 @@ mod tests {
         let edge = p.miscue_limit * p.ball_radius;
         let cue = Cue {
             speed: 0.01,
-            aim: 6.28,
+            aim: 6.2,
             offset: [edge, edge],
             elevation: 0.0,
         };

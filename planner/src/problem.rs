@@ -6,6 +6,7 @@ use snooker_engine::{Params, Setup, SimOptions, Vec3};
 use snooker_scene::Scene;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use crate::line::{Line, ShotKind};
 pub use crate::noise::{Noise, NoiseComponent};
 
 /// A field of a planning request, as errors name it: the library speaks of the request's own
@@ -29,6 +30,10 @@ pub enum RequestField {
     Bounds(StrikeVariable),
     /// One standard deviation of [`Request::noise`].
     Noise(NoiseComponent),
+    /// [`Request::kinds`].
+    Kinds,
+    /// [`Request::plant_balls`].
+    PlantBalls,
 }
 
 impl std::fmt::Display for RequestField {
@@ -42,6 +47,8 @@ impl std::fmt::Display for RequestField {
             RequestField::Samples => f.write_str("samples"),
             RequestField::Bounds(v) => write!(f, "bounds.{}", v.name()),
             RequestField::Noise(c) => write!(f, "noise.{}", c.name()),
+            RequestField::Kinds => f.write_str("kinds"),
+            RequestField::PlantBalls => f.write_str("plant_balls"),
         }
     }
 }
@@ -253,6 +260,11 @@ pub struct Request {
     pub alternatives: usize,
     /// Seed of the noise samples.
     pub seed: u64,
+    /// The kinds of pot tried (direct pots first, the others when those do not reach the
+    /// target).
+    pub kinds: Vec<ShotKind>,
+    /// The balls a plant may strike first (ids); None: any ball.
+    pub plant_balls: Option<Vec<String>>,
 }
 
 impl Request {
@@ -270,6 +282,8 @@ impl Request {
             samples: 256,
             alternatives: 3,
             seed: 1,
+            kinds: ShotKind::ALL.to_vec(),
+            plant_balls: None,
         }
     }
 }
@@ -292,6 +306,8 @@ pub struct Problem {
     pub pocket: usize,
     /// The cue ball's target, m (z = R).
     pub target: Vec3,
+    /// For each ball, whether a plant may strike it first.
+    plant_ok: Vec<bool>,
     shots: AtomicU64,
 }
 
@@ -394,6 +410,19 @@ impl Problem {
         }
         request.bounds.check(&p)?;
         request.noise.check()?;
+        if request.kinds.is_empty() {
+            return Err(bad(RequestField::Kinds, "at least one kind of pot"));
+        }
+        let plant_ok = match &request.plant_balls {
+            None => vec![true; setup.balls.len()],
+            Some(ids) => {
+                let mut ok = vec![false; setup.balls.len()];
+                for id in ids {
+                    ok[index(RequestField::PlantBalls, id)?] = true;
+                }
+                ok
+            }
+        };
         Ok(Problem {
             setup,
             options: scene.options,
@@ -402,8 +431,28 @@ impl Problem {
             object,
             pocket,
             target,
+            plant_ok,
             shots: AtomicU64::new(0),
         })
+    }
+
+    /// True when the cue ball may strike ball `b` first: the object ball, or a ball a plant
+    /// may strike first.
+    pub fn may_hit_first(&self, b: usize) -> bool {
+        b == self.object
+            || (self.request.kinds.contains(&ShotKind::Plant)
+                && b != self.cue
+                && self.plant_ok.get(b).copied().unwrap_or(false))
+    }
+
+    /// The lines the request allows ([`Problem::lines`] of its kinds, plants through the
+    /// balls it allows).
+    pub fn requested_lines(&self) -> Vec<Line> {
+        self.lines()
+            .into_iter()
+            .filter(|l| self.request.kinds.contains(&l.kind))
+            .filter(|l| l.kind != ShotKind::Plant || l.ball.is_some_and(|b| self.may_hit_first(b)))
+            .collect()
     }
 
     /// Shots simulated so far.

@@ -3,6 +3,7 @@
 //! offsets), each sample its own seeded generator, so the answer does not depend on the
 //! thread count.
 
+use crate::line::Line;
 use crate::noise::{Noise, rng_for};
 use crate::problem::Problem;
 use rayon::prelude::*;
@@ -24,8 +25,9 @@ pub struct Robustness {
 }
 
 impl Problem {
-    /// The robustness of strike `cue`; `stream` tells shots apart in the noise's seeding.
-    pub fn robustness(&self, cue: &Cue, stream: u64) -> Robustness {
+    /// The robustness of strike `cue` aimed along `line`; `stream` tells shots apart in the
+    /// noise's seeding.
+    pub fn robustness(&self, cue: &Cue, line: &Line, stream: u64) -> Robustness {
         let noise = self.request.noise;
         let n = self.request.samples;
         let seed = self.request.seed;
@@ -35,7 +37,7 @@ impl Problem {
             .into_par_iter()
             .map(|k| {
                 let c = noise.apply(cue, &ball, p, &mut rng_for(seed, &[stream, k]));
-                self.trial(&c)
+                self.trial(&c, line)
                     .map(|t| (t.pots(), [t.cue_final.x, t.cue_final.y]))
             })
             .collect();

@@ -204,6 +204,8 @@ fn argument(field: RequestField) -> String {
         RequestField::Samples => "samples".into(),
         RequestField::Bounds(v) => format!("bounds['{}']", v.name()),
         RequestField::Noise(c) => format!("noise['{}']", c.name()),
+        RequestField::Kinds => "kinds".into(),
+        RequestField::PlantBalls => "plant_balls".into(),
     }
 }
 

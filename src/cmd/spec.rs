@@ -119,9 +119,15 @@ mod tests {
         assert_eq!(noise("--noise", "", s), Ok(s));
         assert_eq!(noise("--noise", "0", s), Ok(Noise::ZERO));
         assert_eq!(noise("--noise", "standard", Noise::ZERO), Ok(s));
-        assert_eq!(noise("--noise", "standard*2", Noise::ZERO), Ok(s.scaled(2.0)));
+        assert_eq!(
+            noise("--noise", "standard*2", Noise::ZERO),
+            Ok(s.scaled(2.0))
+        );
         let n = noise("--noise", "0,aim=0.002,offset=0.001", s).unwrap();
-        assert_eq!((n.aim, n.speed, n.side, n.height), (0.002, 0.0, 0.001, 0.001));
+        assert_eq!(
+            (n.aim, n.speed, n.side, n.height),
+            (0.002, 0.0, 0.001, 0.001)
+        );
         let n = noise("--noise", "speed=0.1", s).unwrap();
         assert_eq!((n.aim, n.speed), (s.aim, 0.1));
         for bad in ["aim=-1", "aim=x", "blur=1", "standard*x", "loud"] {
