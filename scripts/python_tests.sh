@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # The Python package's part of the test command: a venv (target/py-venv) with what the tests
-# need from PyPI (pytest, numpy, pyarrow, ray), the package installed into it as a user installs
-# it, `pip install ./python` (maturin builds the wheel, sharing the workspace's target
+# need from PyPI (pytest, numpy, pyarrow, ray, gymnasium), the package installed into it as a
+# user installs it, `pip install ./python` (maturin builds the wheel, sharing the workspace's target
 # directory, so the engine crates are not built twice), its formatting and lints, then its tests (python/tests) against the command line built by
 # `cargo test --workspace --profile ci` (target/ci/snooker).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv=target/py-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --disable-pip-version-check pytest numpy pyarrow ray
+"$venv/bin/pip" install --quiet --disable-pip-version-check pytest numpy pyarrow ray gymnasium
 export CARGO_TARGET_DIR=$PWD/target PYO3_PYTHON=$PWD/$venv/bin/python
 cargo fmt --manifest-path python/Cargo.toml -- --check
 cargo clippy --manifest-path python/Cargo.toml --release --all-targets -- -D warnings

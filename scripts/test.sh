@@ -23,6 +23,8 @@ fi
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --profile ci -- -D warnings
 cargo test --workspace --profile ci
+# The API documentation builds without a warning (broken or private links fail it).
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --profile ci --quiet
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
 # (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml. The binary
 # is the one `cargo test` built for fuzz/tests (`cargo run -p` or `cargo build` would resolve

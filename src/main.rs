@@ -2,7 +2,7 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, batch, discrepancy, impact, plan, simulate, synth, validate};
+use snooker::cmd::{self, batch, discrepancy, impact, plan, referee, simulate, synth, validate};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -37,6 +37,9 @@ enum Command {
     /// Simulate many scenes on every core (a directory of scene files or a JSON-lines file);
     /// results as JSON lines or a Parquet table. Exits with 1 if any scene failed.
     Batch(batch::Args),
+    /// Referee a frame of snooker: simulate the frame's strike, judge it by the rules (WPBSA),
+    /// write the verdict and the next frame; several frames play a sequence of strokes.
+    Referee(referee::Args),
 }
 
 fn main() -> ExitCode {
@@ -69,5 +72,6 @@ fn main() -> ExitCode {
         Command::Discrepancy(a) => discrepancy::run(a),
         Command::Plan(a) => plan::run(a),
         Command::Batch(a) => batch::run(a),
+        Command::Referee(a) => referee::run(a),
     }
 }

@@ -3,9 +3,9 @@
 //! residuals and observables.
 
 use anyhow::{Context, bail};
+use snooker_discrepancy::{Findings, Measurement, locate};
 use snooker_engine::impact::impulse::Sample;
 use snooker_engine::{Shot, Vec3};
-use snooker_validation::discrepancy::{Findings, Measurement, locate};
 use std::path::Path;
 
 /// The axes in which the slip between the bodies is measured, as in the thesis: for ball-ball

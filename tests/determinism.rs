@@ -9,8 +9,8 @@ fn same_scene_same_json() {
     let sc = scene::parse(scene::DEFAULT_SCENE, "break-off").unwrap();
     let a = snooker_engine::simulate(&sc.setup, &sc.options).unwrap();
     let b = snooker_engine::simulate(&sc.setup, &sc.options).unwrap();
-    let ja = serde_json::to_string(&result::result_json(&sc, &a)).unwrap();
-    let jb = serde_json::to_string(&result::result_json(&sc, &b)).unwrap();
+    let ja = serde_json::to_string(&result::result_record(&sc, &a)).unwrap();
+    let jb = serde_json::to_string(&result::result_record(&sc, &b)).unwrap();
     assert_eq!(ja, jb);
     assert!(a.events.len() > 20);
 }

@@ -3,7 +3,7 @@
 //! All values are SI. Defaults are the thesis's measured or fitted values
 //! (Mathavan, "Trajectory solutions for a game-playing robot...", cited as
 //! "thesis §x.y"); the few that the thesis does not give are marked as
-//! assumptions with their reason. Each parameter is declared once, in [`declare_params!`]'s
+//! assumptions with their reason. Each parameter is declared once, in `declare_params!`'s
 //! call below; the struct, its defaults, the table of [`PARAMS`] (name, unit, range, source),
 //! access by name and the range checks are all derived from that one declaration.
 

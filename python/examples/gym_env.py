@@ -75,10 +75,10 @@ class SnookerEnv(Base):
         shot = snooker.simulate(scene)
         self.shots += 1
         final = shot.final
-        potted = {p["ball"] for p in shot.pots}
-        off = {b for b, s in final.items() if s["motion"] == "off_table"}
+        potted = {p.ball for p in shot.pots}
+        off = {b for b, s in final.items() if s.motion == "off_table"}
         reward = float(len(potted - {"cue"})) - float("cue" in potted)
-        self.balls = {b: tuple(s["pos"][:2]) for b, s in final.items()
+        self.balls = {b: tuple(s.pos[:2]) for b, s in final.items()
                       if b not in potted and b not in off}
         if "cue" not in self.balls:
             spot = BROWN_SPOT

@@ -80,8 +80,8 @@ def rows(shots: list) -> list:
             out.append({"potted": False, "cue_x": math.nan, "cue_y": math.nan,
                         "error": str(shot)})
             continue
-        pots = {p["ball"]: p["pocket"] for p in shot.pots}
-        cue = shot.final["cue"]["pos"]
+        pots = {p.ball: p.pocket for p in shot.pots}
+        cue = shot.final["cue"].pos
         out.append({"potted": pots.get("red") == POCKET and "cue" not in pots,
                     "cue_x": cue[0], "cue_y": cue[1], "error": None})
     return out

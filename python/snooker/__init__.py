@@ -12,24 +12,51 @@ Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's
 Scenes are given as a path to a scene file, TOML text, or a dict with the scene file's keys.
 Bad scenes raise ``ValueError`` with the command line's message; a valid scene that the engine
 could not simulate raises ``SimulationError``.
+
+Snooker by the rules: ``snooker.Frame`` is a frame between strokes (the balls at rest, the ball
+on, the scores, whose turn), ``frame.play(strike)`` simulates a stroke and judges it:
+
+    >>> frame = snooker.Frame.break_off()
+    >>> verdict, after = frame.play({"speed": 7.0, "aim": 0.0465})
+    >>> verdict.foul is None or verdict.foul in ("first_hit_not_on", "cue_ball_potted")
+    True
 """
 
 from __future__ import annotations
 
-import json
-import math
 import numbers
 import os
-from typing import Any, Iterable, Optional, Sequence, Union
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _snooker
 from ._snooker import CannotPot, SimulationError
+from .records import (
+    BallState,
+    Event,
+    ImpactReport,
+    OffTable,
+    Plan,
+    PlannedShot,
+    Pot,
+    ShotResult,
+)
 
 __all__ = [
     "Scene",
     "Shot",
+    "ShotResult",
+    "Event",
+    "BallState",
+    "Pot",
+    "OffTable",
+    "Plan",
+    "PlannedShot",
+    "ImpactReport",
+    "Frame",
+    "Verdict",
+    "frame",
     "SimulationError",
     "CannotPot",
     "scene",
@@ -42,6 +69,12 @@ __all__ = [
 
 Scene = _snooker.Scene
 SceneLike = Union[str, "os.PathLike[str]", dict, "_snooker.Scene"]
+#: A frame of snooker between strokes (see ``frame``); ``Frame.break_off()``,
+#: ``Frame.open_table(reds, seed)``, ``Frame.load(path)``, ``Frame.from_dict(d)``.
+Frame = _snooker.Frame
+#: The referee's verdict on a stroke (``Frame.play``).
+Verdict = _snooker.Verdict
+FrameLike = Union[str, "os.PathLike[str]", dict, "_snooker.Frame"]
 
 
 def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
@@ -55,10 +88,7 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     if isinstance(source, _snooker.Scene):
         return source
     if isinstance(source, dict):
-        bad = _not_json(source, "")
-        if bad is not None:
-            raise ValueError(f"{name}: {bad}")
-        return _snooker.parse_json(json.dumps(source, allow_nan=False, default=_plain), name)
+        return _snooker.parse_dict(_plain(source), name)
     if isinstance(source, os.PathLike):
         return _snooker.load(os.fspath(source))
     if isinstance(source, str):
@@ -70,78 +100,88 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     )
 
 
-def _not_json(value: object, key: str) -> Optional[str]:
-    """Why ``value`` (at ``key``) cannot be a scene's JSON, in the scene parser's words, or None."""
-    at = f"key `{key}`: " if key else ""
+def frame(source: FrameLike, name: str = "frame") -> "_snooker.Frame":
+    """Reads and checks a frame of snooker (formats.md, "Frame": a scene plus a ``[frame]``
+    table): a path to a frame file, TOML text, a dict with the file's keys, or a frame already
+    read. Its ``[cue]``, if any, is not part of the frame (pass the strike to ``play``).
+    Raises ``ValueError`` naming the file, key and reason."""
+    if isinstance(source, _snooker.Frame):
+        return source
+    if isinstance(source, dict):
+        return _snooker.Frame.from_dict(_plain(source), name)
+    if isinstance(source, os.PathLike):
+        return _snooker.Frame.load(os.fspath(source))
+    if isinstance(source, str):
+        if "\n" in source or "=" in source:
+            return _snooker.Frame.from_toml(source, name)
+        return _snooker.Frame.load(source)
+    raise ValueError(
+        f"{name}: a frame is a path, TOML text or a dict, not {type(source).__name__}"
+    )
+
+
+def _plain(value: Any) -> Any:
+    """``value`` with NumPy arrays and scalars as the lists and numbers they hold (what the
+    scene crate reads), everything else as it is: a conversion, not a check (the scene crate
+    checks every value and names the key at fault)."""
     if isinstance(value, dict):
-        for k, v in value.items():
-            if not isinstance(k, str):
-                return f"{at}not a scene: keys are strings, not {type(k).__name__}"
-            bad = _not_json(v, f"{key}.{k}" if key else k)
-            if bad is not None:
-                return bad
-        return None
-    if isinstance(value, (list, tuple, np.ndarray)):
-        for i, v in enumerate(value):
-            # An array's element is reported at the array's key, as the parser does.
-            inner = f"{key}[{i}]" if isinstance(v, (dict, list, tuple, np.ndarray)) else key
-            bad = _not_json(v, inner)
-            if bad is not None:
-                return bad
-        return None
-    if isinstance(value, numbers.Real) and not math.isfinite(value):
-        shown = "NaN" if math.isnan(value) else ("inf" if value > 0 else "-inf")
-        return f"{at}must be a finite number, got {shown}"
-    if value is None or isinstance(value, (str, bool, numbers.Real)):
-        return None
-    return f"{at}not a scene: {type(value).__name__} is not a number, string, list or table"
-
-
-def _plain(value: object) -> object:
-    """NumPy arrays and scalars as the JSON numbers and lists they hold (``json.dumps``)."""
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
     if isinstance(value, np.ndarray):
-        return value.tolist()
+        return _plain(value.tolist())
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
     if isinstance(value, numbers.Integral):
         return int(value)
     if isinstance(value, numbers.Real):
         return float(value)
-    raise TypeError(f"{type(value).__name__} is not a number, string, list or table")
+    if isinstance(value, (set, frozenset)):
+        # Unordered, so never a scene's array: handed on as an opaque object the scene crate
+        # refuses at its key ("'set' object is not an instance of 'Sequence'").
+        return _Unordered()
+    return value
+
+
+#: An opaque stand-in for a set (its name is what the scene crate's message shows).
+_Unordered = type("set", (), {"__doc__": "A set in a dict scene: not a sequence."})
 
 
 class Shot:
-    """A simulated shot: its events, final states and pots as in ``snooker simulate --json``,
-    and the exact trajectory at any times."""
+    """A simulated shot: its result document (``result``: events, final states, pots, as
+    ``snooker simulate --json`` writes them, as objects) and the exact trajectory at any
+    times."""
 
     def __init__(self, native: "_snooker.Shot"):
         self._native = native
-        self._doc: Optional[dict] = None
+        self._result: Optional[ShotResult] = None
 
     @property
-    def result(self) -> dict:
+    def result(self) -> ShotResult:
         """The whole result document (formats.md, "Result"): scene, events, final, duration,
-        pots, off_table, models, params, strike, units."""
-        if self._doc is None:
-            self._doc = json.loads(self._native.result_json())
-        return self._doc
+        pots, off_table, models, params, strike, units; ``result.to_dict()`` is the JSON
+        document."""
+        if self._result is None:
+            self._result = ShotResult.from_dict(self._native.result())
+        return self._result
 
     @property
-    def events(self) -> list:
-        """The events in time order, each a dict (t, kind, balls, after, ...)."""
-        return self.result["events"]
+    def events(self) -> List[Event]:
+        """The events in time order."""
+        return self.result.events
 
     @property
-    def final(self) -> dict:
-        """Every ball's final state by id: pos, vel, spin (lists), motion (as in the result
-        document, without reading it whole)."""
+    def final(self) -> Dict[str, BallState]:
+        """Every ball's final state by id (without building the whole result document)."""
         return {
-            b: {"pos": list(p), "vel": list(v), "spin": list(w), "motion": m}
+            b: BallState(tuple(p), tuple(v), tuple(w), m)
             for b, p, v, w, m in self._native.final_states()
         }
 
     @property
-    def pots(self) -> list:
-        """The balls potted, in time order: dicts with ball, pocket and t (s)."""
-        return [{"ball": b, "pocket": p, "t": t} for b, p, t in self._native.pots()]
+    def pots(self) -> List[Pot]:
+        """The balls potted, in time order."""
+        return [Pot(b, p, t) for b, p, t in self._native.pots()]
 
     @property
     def duration(self) -> float:
@@ -149,7 +189,7 @@ class Shot:
         return self._native.duration
 
     @property
-    def ball_ids(self) -> list:
+    def ball_ids(self) -> List[str]:
         """The balls' ids, in the order of the positions' second axis."""
         return self._native.ball_ids
 
@@ -162,8 +202,8 @@ class Shot:
 
     def __repr__(self) -> str:
         return (
-            f"<Shot {self.result['scene']!r}: {len(self.events)} events, "
-            f"{self.duration:.3f} s, pots {[p['ball'] for p in self.pots]}>"
+            f"<Shot {self._native.scene_name!r}: {self._native.event_count} events, "
+            f"{self.duration:.3f} s, pots {[p.ball for p in self.pots]}>"
         )
 
 
@@ -214,24 +254,25 @@ def plan(
     alternatives: int = 3,
     seed: int = 1,
     cue_ball: str = "cue",
-) -> dict:
+) -> Plan:
     """Plans a shot as ``snooker plan`` does (thesis chapter 7): the strike that pots ``pot``
     in ``pocket`` and leaves the cue ball nearest ``cue_to`` (x, y in m), ranked by its pot
-    probability under execution noise. Returns the plan document (formats.md, "Plan").
+    probability under execution noise. Returns the plan (formats.md, "Plan"; ``to_dict()`` is
+    the JSON document).
 
     ``noise``: the execution noise: ``"standard"`` (the default: the computational pool
     tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
     0.5 mm), ``0`` (none), or a dict of standard deviations changing the standard noise, e.g.
     ``{"aim": 0.002, "speed": 0.04}`` (keys ``aim``, ``elevation`` rad, ``speed`` m/s,
     ``side``, ``height`` m; ``offset`` sets both side and height; before, ``speed`` was a
-    fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``: intervals, e.g. ``{"speed": (0.3, 6.0)}``
-    (keys ``speed`` m/s, ``elevation`` rad, ``side`` and ``height`` m). Bad requests raise
-    ``ValueError`` naming the argument (``noise['aim']``, ``cue_to``); a ball that cannot be
-    potted raises ``CannotPot``.
+    fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``:
+    intervals, e.g. ``{"speed": (0.3, 6.0)}`` (keys ``speed`` m/s, ``elevation`` rad, ``side``
+    and ``height`` m). Bad requests raise ``ValueError`` naming the argument (``noise['aim']``,
+    ``cue_to``); a ball that cannot be potted raises ``CannotPot``.
     """
 
     x, y = (float(c) for c in cue_to)
-    text = _snooker.plan(
+    doc = _snooker.plan(
         scene(source),
         pot,
         pocket,
@@ -244,7 +285,7 @@ def plan(
         int(seed),
         cue_ball,
     )
-    return json.loads(text)
+    return Plan.from_dict(doc)
 
 
 def _noise(noise) -> dict:
@@ -261,11 +302,11 @@ def _noise(noise) -> dict:
     raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
 
 
-def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> dict:
+def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> ImpactReport:
     """Calls a native impact report with parameter overrides by name."""
     overrides = {str(k): float(v) for k, v in (params or {}).items()}
-    text = native(float(speed), float(angle), float(topspin), float(sidespin), overrides)
-    return json.loads(text)
+    doc = native(float(speed), float(angle), float(topspin), float(sidespin), overrides)
+    return ImpactReport.from_dict(doc)
 
 
 def impact_ball_ball(
@@ -274,7 +315,7 @@ def impact_ball_ball(
     topspin: float = 0.0,
     sidespin: float = 0.0,
     params: Optional[dict] = None,
-) -> dict:
+) -> ImpactReport:
     """One ball-ball impact of the thesis's frictional model, as ``snooker impact ball-ball
     --json``: a cue ball moving along +x at ``speed`` (m/s) with ``topspin`` and ``sidespin``
     (units of V/R; 1 = rolling) meets a resting object ball at ``cut`` degrees (0 = full
@@ -289,7 +330,7 @@ def impact_cushion(
     topspin: float = 0.0,
     sidespin: float = 0.0,
     params: Optional[dict] = None,
-) -> dict:
+) -> ImpactReport:
     """One cushion impact of the thesis's model, as ``snooker impact cushion --json``: a ball
     at ``speed`` (m/s), ``angle`` degrees from the cushion line (90 = perpendicular), with
     ``topspin`` and ``sidespin`` (units of V/R). Returns the report (the ball after the impact

@@ -7,12 +7,15 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
+use pythonize::Depythonizer;
 use snooker_engine::SimError;
 use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
 use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
+
+mod rules;
 
 create_exception!(
     _snooker,
@@ -75,6 +78,20 @@ fn parse_json(text: &str, file: &str) -> PyResult<Scene> {
         .map_err(bad_scene)
 }
 
+/// Reads a scene given as a dict with the scene file's keys (lists, numbers and strings as
+/// its values), checked by the scene crate as a file is: errors name the key.
+#[pyfunction]
+fn parse_dict(source: &Bound<'_, PyAny>, file: &str) -> PyResult<Scene> {
+    snooker_scene::parse_value(&mut Depythonizer::from_object(source), file)
+        .map(|s| Scene(Arc::new(s)))
+        .map_err(bad_scene)
+}
+
+/// A typed value as Python objects (dicts, lists, numbers, strings), no JSON text between.
+fn to_python<'py, T: serde::Serialize>(py: Python<'py>, value: &T) -> PyResult<Bound<'py, PyAny>> {
+    pythonize::pythonize(py, value).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
 /// A simulated shot.
 #[pyclass(frozen, module = "snooker._snooker")]
 struct Shot {
@@ -84,16 +101,30 @@ struct Shot {
 
 #[pymethods]
 impl Shot {
-    /// The result document of `snooker simulate --json`, as JSON text.
-    fn result_json(&self) -> String {
-        let doc = snooker_scene::result::result_json(&self.scene, &self.shot);
-        serde_json::to_string(&doc).expect("JSON of finite numbers")
+    /// The result document of `snooker simulate --json`, as Python values.
+    fn result<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        to_python(
+            py,
+            &snooker_scene::result::result_record(&self.scene, &self.shot),
+        )
     }
 
     /// The balls' ids, in the scene's order.
     #[getter]
     fn ball_ids(&self) -> Vec<String> {
         self.shot.tracks.iter().map(|t| t.id.clone()).collect()
+    }
+
+    /// The scene's name.
+    #[getter]
+    fn scene_name(&self) -> &str {
+        &self.scene.name
+    }
+
+    /// How many events the shot has.
+    #[getter]
+    fn event_count(&self) -> usize {
+        self.shot.events.len()
     }
 
     /// The pots, as in the result document without reading it whole: (ball, pocket, t).
@@ -209,7 +240,7 @@ fn argument(field: RequestField) -> String {
     }
 }
 
-/// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as JSON text.
+/// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as Python values.
 /// `noise` maps `aim`, `elevation`, `speed`, `side`, `height` (rad, m/s, m; `offset` for both
 /// side and height) to standard deviations changing the standard noise; `bounds` maps `speed`,
 /// `elevation`, `side`, `height` to (low, high).
@@ -217,8 +248,8 @@ fn argument(field: RequestField) -> String {
 #[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise=None, bounds=None,
                     samples=256, alternatives=3, seed=1, cue_ball="cue"))]
 #[allow(clippy::too_many_arguments)]
-fn plan(
-    py: Python<'_>,
+fn plan<'py>(
+    py: Python<'py>,
     scene: &Scene,
     pot: &str,
     pocket: &str,
@@ -230,7 +261,7 @@ fn plan(
     alternatives: usize,
     seed: u64,
     cue_ball: &str,
-) -> PyResult<String> {
+) -> PyResult<Bound<'py, PyAny>> {
     let sc = scene.0.clone();
     let p = sc.setup.params;
     let bad = |e: PlanError| match e {
@@ -276,20 +307,22 @@ fn plan(
         })?;
         request.bounds.set(v, Interval { lo, hi });
     }
-    py.detach(|| snooker_planner::plan(&sc, request))
-        .map(|plan| serde_json::to_string(&plan).expect("JSON of finite numbers"))
-        .map_err(bad)
+    let plan = py
+        .detach(|| snooker_planner::plan(&sc, request))
+        .map_err(bad)?;
+    to_python(py, &plan)
 }
 
 /// The report of one impact (as `snooker impact --json`), as JSON text: `cut` (ball-ball,
 /// degrees) or `angle` (cushion, degrees) says which; `params` are NAME=VALUE overrides.
 fn impact(
+    py: Python<'_>,
     geometry: Geometry,
     speed: f64,
     topspin: f64,
     sidespin: f64,
     params: BTreeMap<String, f64>,
-) -> PyResult<String> {
+) -> PyResult<Bound<'_, PyAny>> {
     let bad = |e: String| PyValueError::new_err(e);
     let given: Vec<(String, f64)> = params.into_iter().collect();
     let params = snooker_scene::override_params(snooker_engine::Params::default(), &given)
@@ -307,33 +340,43 @@ fn impact(
         params,
     };
     let report = impact_report(&spec, None).map_err(|e| bad(e.to_string()))?;
-    Ok(serde_json::to_string(&report.doc).expect("JSON of finite numbers"))
+    to_python(py, &report.doc)
 }
 
 /// A cue ball moving along +x at `speed` (m/s) meets a resting object ball at `cut` degrees.
 #[pyfunction]
 #[pyo3(signature = (speed, cut=0.0, topspin=0.0, sidespin=0.0, params=BTreeMap::new()))]
 fn impact_ball_ball(
+    py: Python<'_>,
     speed: f64,
     cut: f64,
     topspin: f64,
     sidespin: f64,
     params: BTreeMap<String, f64>,
-) -> PyResult<String> {
-    impact(Geometry::BallBall { cut }, speed, topspin, sidespin, params)
+) -> PyResult<Bound<'_, PyAny>> {
+    impact(
+        py,
+        Geometry::BallBall { cut },
+        speed,
+        topspin,
+        sidespin,
+        params,
+    )
 }
 
 /// A ball meets a cushion at `speed` (m/s), `angle` degrees from the cushion line.
 #[pyfunction]
 #[pyo3(signature = (speed, angle=90.0, topspin=0.0, sidespin=0.0, params=BTreeMap::new()))]
 fn impact_cushion(
+    py: Python<'_>,
     speed: f64,
     angle: f64,
     topspin: f64,
     sidespin: f64,
     params: BTreeMap<String, f64>,
-) -> PyResult<String> {
+) -> PyResult<Bound<'_, PyAny>> {
     impact(
+        py,
         Geometry::Cushion { angle },
         speed,
         topspin,
@@ -347,9 +390,12 @@ fn impact_cushion(
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Scene>()?;
     m.add_class::<Shot>()?;
+    m.add_class::<rules::Frame>()?;
+    m.add_class::<rules::Verdict>()?;
     m.add_function(wrap_pyfunction!(load, m)?)?;
     m.add_function(wrap_pyfunction!(parse_toml, m)?)?;
     m.add_function(wrap_pyfunction!(parse_json, m)?)?;
+    m.add_function(wrap_pyfunction!(parse_dict, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;

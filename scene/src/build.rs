@@ -29,7 +29,7 @@ fn check_finite(file: &str, key: &str, values: &[f64]) -> Result<(), SceneError>
 }
 
 /// The table of `spec`, its pocket sizes checked against the ball radius `r`.
-fn table(spec: &SceneFile, r: f64, file: &str) -> Result<(Table, SnookerDims), SceneError> {
+fn table<X>(spec: &SceneFile<X>, r: f64, file: &str) -> Result<(Table, SnookerDims), SceneError> {
     let fail = |key: &str, reason: String| SceneError::new(file, key, reason);
     let t = &spec.table;
     let mut dims = SnookerDims::default();
@@ -74,8 +74,8 @@ fn table(spec: &SceneFile, r: f64, file: &str) -> Result<(Table, SnookerDims), S
 
 /// The balls of `spec` (layout first, listed balls replacing layout balls of the same id) and
 /// the scene-file key of each.
-fn balls(
-    spec: &SceneFile,
+fn balls<X>(
+    spec: &SceneFile<X>,
     table: &Table,
     dims: &SnookerDims,
     r: f64,
@@ -153,7 +153,7 @@ fn balls(
 }
 
 /// The limits of `[sim]`.
-fn options(spec: &SceneFile, file: &str) -> Result<SimOptions, SceneError> {
+fn options<X>(spec: &SceneFile<X>, file: &str) -> Result<SimOptions, SceneError> {
     let fail = |key: &str, reason: String| SceneError::new(file, key, reason);
     let mut options = SimOptions::default();
     if let Some(n) = spec.sim.max_events {
@@ -183,6 +183,12 @@ fn options(spec: &SceneFile, file: &str) -> Result<SimOptions, SceneError> {
 
 /// Builds and validates the scene of `spec`; `file` names it in errors.
 pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
+    build_keyed(spec, file).map(|(scene, _)| scene)
+}
+
+/// As [`build`], with the scene-file key of each ball of the setup, in its order: `balls[i]`
+/// for a listed ball, `layout (ID)` for a ball of the layout.
+pub fn build_keyed<X>(spec: SceneFile<X>, file: &str) -> Result<(Scene, Vec<String>), SceneError> {
     let fail = |key: &str, reason: String| SceneError::new(file, key, reason);
     // A file's names were checked as it was read; a built scene's are checked here.
     if let Some((name, _)) = spec
@@ -249,7 +255,18 @@ pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
         }
         None => fail(&e.field, e.reason),
     })?;
-    Ok(Scene {
+    let keys = keys
+        .into_iter()
+        .zip(&setup.balls)
+        .map(|(k, b)| {
+            if k == "layout" {
+                format!("layout ({})", b.id)
+            } else {
+                k
+            }
+        })
+        .collect();
+    let scene = Scene {
         name: spec.name.unwrap_or_else(|| {
             Path::new(file)
                 .file_stem()
@@ -258,5 +275,6 @@ pub fn build(spec: SceneFile, file: &str) -> Result<Scene, SceneError> {
         setup,
         options,
         strike,
-    })
+    };
+    Ok((scene, keys))
 }

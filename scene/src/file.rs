@@ -5,7 +5,7 @@
 //! `with_*` methods, checked by [`SceneFile::build`] exactly as a file is, and written as
 //! TOML or JSON that reads back to the bit.
 
-use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
+use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use serde::ser::{SerializeMap, Serializer};
 use serde::{Deserialize, Serialize};
 use snooker_engine::params::PARAMS;
@@ -58,10 +58,13 @@ impl<'de, const N: usize> Deserialize<'de> for Numbers<N> {
     }
 }
 
-/// A whole scene file.
+/// A whole scene file. `X` is what its `[frame]` table is read as: a frame of snooker
+/// (formats.md, "Frame") for the rules crate; for a scene alone the table is not read
+/// ([`IgnoredAny`]: `snooker simulate` runs a frame file as the scene it is). The `[frame]`
+/// table is not written by [`SceneFile::to_toml`]: a frame writes its own.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct SceneFile {
+pub struct SceneFile<X = IgnoredAny> {
     /// Free text (default: the file's stem).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
@@ -86,6 +89,9 @@ pub struct SceneFile {
     /// Limits of the simulation.
     #[serde(default, skip_serializing_if = "SimSpec::is_default")]
     pub sim: SimSpec,
+    /// `[frame]`: the state of a game of snooker, read by whoever asked for `X`.
+    #[serde(skip_serializing)]
+    pub frame: Option<X>,
 }
 
 impl SceneFile {

@@ -7,8 +7,10 @@
 //! ```
 //! let scene = snooker_scene::parse(snooker_scene::DEFAULT_SCENE, "break-off.toml").unwrap();
 //! let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
-//! let json = snooker_scene::result::result_json(&scene, &shot);
-//! assert_eq!(json["scene"], "break-off");
+//! let doc = snooker_scene::result::result_record(&scene, &shot);
+//! assert_eq!(doc.scene, "break-off");
+//! let json = serde_json::to_string(&doc).unwrap(); // as `snooker simulate --json` writes it
+//! assert!(json.starts_with(r#"{"scene":"break-off","events":["#));
 //! ```
 
 pub mod build;
@@ -20,6 +22,7 @@ pub mod model;
 pub mod params;
 pub mod result;
 pub mod toml_input;
+pub mod value_input;
 pub mod write;
 
 pub use error::SceneError;
@@ -27,7 +30,8 @@ pub use file::{BallSpec, CueSpec, SceneFile};
 pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
-pub use toml_input::from_toml;
+pub use toml_input::{from_toml, key_position};
+pub use value_input::from_value;
 
 use snooker_engine::cue::{Cue, Strike};
 use snooker_engine::{BallState, Setup, SimOptions};
@@ -77,6 +81,66 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 /// Parses and validates scene text; `file` names it in error messages.
 pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     build::build(from_toml(text, file)?, file)
+}
+
+/// A scene file read with its `[frame]` table (formats.md, "Frame": a scene plus the state of
+/// a game of snooker): the scene, the table as the caller's type `X` (`None` when the file has
+/// none), and the scene-file key of each ball of the setup (`balls[2]`, `layout (red3)`), so
+/// that the caller's own checks name the key at fault as the scene's do.
+#[derive(Debug, Clone)]
+pub struct WithFrame<X> {
+    /// The scene (the cue strike applied).
+    pub scene: Scene,
+    /// The `[frame]` table.
+    pub frame: Option<X>,
+    /// The key of each ball of `scene.setup.balls`, in its order.
+    pub ball_keys: Vec<String>,
+}
+
+fn with_frame<X>(mut spec: file::SceneFile<X>, file: &str) -> Result<WithFrame<X>, SceneError> {
+    let frame = spec.frame.take();
+    let (scene, ball_keys) = build::build_keyed(spec, file)?;
+    Ok(WithFrame {
+        scene,
+        frame,
+        ball_keys,
+    })
+}
+
+/// Parses and validates scene text with its `[frame]` table read as `X` (errors in the table
+/// name their key, line and column like any other); `file` names it in error messages.
+pub fn parse_with_frame<X: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<WithFrame<X>, SceneError> {
+    with_frame(from_toml(text, file)?, file)
+}
+
+/// As [`parse_with_frame`], for a scene given as a value of any self-describing format (a
+/// Python dict): errors name the key but no line.
+pub fn parse_value_with_frame<'de, D, X>(d: D, file: &str) -> Result<WithFrame<X>, SceneError>
+where
+    D: serde::Deserializer<'de>,
+    X: serde::Deserialize<'de>,
+{
+    with_frame(from_value(d, file)?, file)
+}
+
+/// Parses and validates a scene given as a value of any self-describing format (a Python
+/// dict through pythonize) with the scene file's keys; `file` names it in error messages.
+pub fn parse_value<'de, D: serde::Deserializer<'de>>(
+    d: D,
+    file: &str,
+) -> Result<Scene, SceneError> {
+    build::build(from_value::<D, file::SceneFile>(d, file)?, file)
+}
+
+/// As [`parse_with_frame`], for a scene given as one JSON object.
+pub fn parse_json_with_frame<X: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<WithFrame<X>, SceneError> {
+    with_frame(from_json(text, file)?, file)
 }
 
 /// Parses and validates a scene given as one JSON object with the scene file's keys (a line

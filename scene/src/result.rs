@@ -5,7 +5,6 @@ use crate::Scene;
 use serde::de::{MapAccess, Visitor};
 use serde::ser::SerializeMap;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-use serde_json::Value;
 use snooker_engine::{BallState, EventKind, Models, Motion, Shot};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -285,11 +284,6 @@ pub fn result_record(scene: &Scene, shot: &Shot) -> ShotRecord {
 
 /// The units reminder of every result.
 pub const UNITS: &str = "SI: m, s, rad, m/s, rad/s; table frame, z up";
-
-/// The result document of `shot` as a JSON value (see [`result_record`]).
-pub fn result_json(scene: &Scene, shot: &Shot) -> Value {
-    serde_json::to_value(result_record(scene, shot)).expect("a result of finite numbers")
-}
 
 /// A short human summary: events by kind, pots, final positions, simulated duration.
 pub fn summary(scene: &Scene, shot: &Shot) -> String {

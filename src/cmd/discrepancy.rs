@@ -6,7 +6,7 @@ use super::{bad_input, failed};
 use crate::output::{check_output, check_output_dir, write_atomic};
 use crate::{plot, record};
 use anyhow::Context;
-use snooker_validation::discrepancy::{self as dsc, Findings, Measurement, data_file};
+use snooker_discrepancy::{self as dsc, Findings, Measurement, data_file};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 

@@ -93,7 +93,7 @@ pub fn run(args: Args) -> ExitCode {
         },
     };
     if let Some(out) = json {
-        let doc = result::result_json(&scene, &shot);
+        let doc = result::result_record(&scene, &shot);
         let text = serde_json::to_string_pretty(&doc).expect("JSON of finite numbers");
         if out == "-" {
             let mut stdout = std::io::stdout().lock();

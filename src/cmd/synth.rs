@@ -5,9 +5,9 @@
 use super::bad_input;
 use crate::output::{check_output, write_atomic};
 use anyhow::{Context, bail};
-use snooker_validation::discrepancy::data_file;
-use snooker_validation::discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
-use snooker_validation::discrepancy::{Effect, Model};
+use snooker_discrepancy::data_file;
+use snooker_discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
+use snooker_discrepancy::{Effect, Model};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 

@@ -7,6 +7,7 @@
 //! component set. Entity paths and scales are documented in `docs/recording.md`.
 
 mod blueprint;
+pub mod frame;
 pub mod sample;
 mod table;
 
@@ -154,6 +155,18 @@ pub fn encode_with_overlays(
     opts: &RecordOptions,
     overlays: &[Overlay],
 ) -> Result<Vec<u8>, RecordError> {
+    encode_with(scene, shot, opts, overlays, |_| Ok(()))
+}
+
+/// As [`encode_with_overlays`], then `extra` logs what the caller adds (a frame's scoreboard)
+/// to the same recording.
+pub fn encode_with(
+    scene: &Scene,
+    shot: &Shot,
+    opts: &RecordOptions,
+    overlays: &[Overlay],
+    extra: impl FnOnce(&RecordingStream) -> Result<(), RecordError>,
+) -> Result<Vec<u8>, RecordError> {
     opts.validate()?;
     // Checked before anything is allocated: the grid, the end, two instants per event.
     let instants = (shot.duration * opts.rate).floor() + 2.0 + 2.0 * shot.events.len() as f64;
@@ -194,6 +207,7 @@ pub fn encode_with_overlays(
     for o in overlays {
         log_overlay(&rec, o)?;
     }
+    extra(&rec)?;
     storage.drain_as_bytes().map_err(rerun_err)
 }
 

@@ -13,7 +13,6 @@ pub mod compare;
 pub mod convergence;
 pub mod crosscheck;
 pub mod digest;
-pub mod discrepancy;
 pub mod ensemble;
 pub mod nose;
 pub mod rapier_run;

@@ -69,10 +69,10 @@ pub enum ImpactFriction {
 /// positions, not the velocities, so a sinking ball's velocity reads zero: the depth itself is
 /// watched (it approaches the contact spring's static deflection g / (2 pi f)^2 with a time
 /// constant of about a third of a second).
-const SETTLED_DEPTH_CHANGE: f64 = 1e-10;
+pub const SETTLED_DEPTH_CHANGE: f64 = 1e-10;
 
 /// Steps between two looks at the depth while settling.
-const SETTLE_CHECK: usize = 100;
+pub const SETTLE_CHECK: usize = 100;
 
 /// Depth a ball resting on the cloth sinks into it in rapier with the contacts of `cfg`, m:
 /// measured once per (ball, contact settings) on a world of one ball, then cached (every ball

@@ -1,7 +1,7 @@
 //! A broad phase for the table's features: the plan-view box a ball's path stays in over a
 //! window, computed once per ball and event, so that a cushion, jaw or pocket the box is
 //! clearly away from is not searched at all. A feature is skipped only when no contact could
-//! be accepted with it (the box is exact, then widened by [`SLACK`] and by rounding), so
+//! be accepted with it (the box is exact, then widened by `SLACK` and by rounding), so
 //! culling changes no result.
 
 use super::VERIFY_TOL;
@@ -11,7 +11,7 @@ use crate::motion::Path;
 /// Widening of the box beyond the contact tests' tolerances, m.
 const SLACK: f64 = 1e3 * VERIFY_TOL;
 
-/// The plan-view box (x and y) a path stays in over [0, window], widened by [`SLACK`] and
+/// The plan-view box (x and y) a path stays in over [0, window], widened by `SLACK` and
 /// the rounding of the path's numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanBox {

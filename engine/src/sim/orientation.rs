@@ -14,7 +14,7 @@ const MAX_SUBSTEP_ANGLE: f64 = 0.01;
 /// The ball's orientation (body to table frame) at each of `times` (in order), starting from
 /// the identity at the first:
 /// dq/dt = (1/2) w q with the exact w(t) of the trajectory, integrated by the exponential
-/// midpoint rule over substeps of at most [`MAX_SUBSTEP_ANGLE`]. Where no event lies strictly
+/// midpoint rule over substeps of at most `MAX_SUBSTEP_ANGLE`. Where no event lies strictly
 /// between two times (every event time among `times`, as a recording samples them), w(t) is
 /// smooth between them except where a decaying sidespin reaches zero; a time repeated (an
 /// event's before and after) keeps the orientation.

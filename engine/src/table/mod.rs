@@ -124,7 +124,9 @@ impl Table {
         let tol = crate::detect::TOUCH_TOL;
         let (lo_x, hi_x) = (contact, self.length - contact);
         let (lo_y, hi_y) = (contact, self.width - contact);
-        if pos.x < lo_x - tol || pos.x > hi_x + tol || pos.y < lo_y - tol || pos.y > hi_y + tol {
+        let outside =
+            pos.x < lo_x - tol || pos.x > hi_x + tol || pos.y < lo_y - tol || pos.y > hi_y + tol;
+        if outside && !self.in_mouth(pos, contact) {
             return Some(format!(
                 "centre ({:.4}, {:.4}) m is off the cloth: a ball's centre must lie in \
                  [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses)",
@@ -142,6 +144,23 @@ impl Table {
             }
         }
         None
+    }
+
+    /// True when a ball centred at `pos` (plan) rests between a pocket's jaws, beyond the
+    /// line of the noses but short of the fall: on the bed of the pocket's mouth, clear of
+    /// every nose and facing along its length (where a shot can leave a ball: WPBSA Section 3
+    /// Rule 9, a ball on the edge of a pocket). The jaws and falls are checked apart.
+    fn in_mouth(&self, pos: Vec3, contact: f64) -> bool {
+        let tol = crate::detect::TOUCH_TOL;
+        let near = self
+            .pockets
+            .iter()
+            .any(|p| (pos - p.mouth).norm() <= p.mouth_width);
+        near && self.cushions.iter().all(|c| {
+            let s = (pos - c.start).dot(&c.direction());
+            let along = s >= 0.0 && s <= c.length();
+            !along || c.normal.dot(&(pos - c.start)) >= contact - tol
+        })
     }
 
     /// True when a ball centre at `pos` (plan) is on the playing surface or in a pocket's

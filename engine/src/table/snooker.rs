@@ -271,6 +271,49 @@ mod tests {
     }
 
     #[test]
+    fn a_ball_may_rest_in_a_pockets_mouth_but_not_in_a_cushion_jaw_or_fall() {
+        // Where random strokes left balls at rest (found by the rules crate's property test):
+        // between the jaws, beyond the line of the noses, short of the fall.
+        let t = build(&SnookerDims::default());
+        let p = crate::Params::default();
+        let contact = p.cushion_contact_distance();
+        for (x, y) in [(1.7834, 1.7704), (1.7898, 0.0192), (0.0217, 0.0439)] {
+            let at = Vec3::new(x, y, 0.0);
+            assert_eq!(t.placement_error(at, contact), None, "({x}, {y})");
+            // A shot from there runs: a ball struck into the pocket falls.
+            let ball = crate::Ball {
+                id: "red".into(),
+                kind: crate::BallKind::Red,
+                state: crate::BallState {
+                    vel: (t
+                        .pockets
+                        .iter()
+                        .min_by(|a, b| (a.centre - at).norm().total_cmp(&(b.centre - at).norm())))
+                    .map(|k| (k.centre - at).normalize() * 0.3)
+                    .unwrap(),
+                    ..crate::BallState::at_rest(x, y, p.ball_radius)
+                },
+            };
+            let setup = crate::Setup {
+                table: t.clone(),
+                params: p,
+                models: Default::default(),
+                balls: vec![ball],
+            };
+            setup.validate().unwrap();
+            let shot = crate::simulate(&setup, &Default::default()).unwrap();
+            assert_eq!(shot.final_states()[0].motion, crate::Motion::Pocketed);
+        }
+        // Beyond the noses away from a mouth; into a jaw; over a fall: refused.
+        for (x, y) in [(1.0, 1.77), (1.7845 + 0.045, 1.77), (1.7845, 1.79)] {
+            assert!(
+                t.placement_error(Vec3::new(x, y, 0.0), contact).is_some(),
+                "({x}, {y})"
+            );
+        }
+    }
+
+    #[test]
     fn spots_follow_the_rules() {
         let d = SnookerDims::default();
         assert!((d.spot("pink").unwrap().x - 2.67675).abs() < 1e-9);

@@ -1,0 +1,152 @@
+"""A Gymnasium environment that plays real frames of snooker: one step is one stroke, judged
+by the rules (WPBSA, as the `snooker referee` command judges them).
+
+Observation (a dict): ``balls``, every ball's (x, y) in m in a fixed order (the cue ball, red1
+to red15, yellow to black), (-1, -1) for a ball not on the table (potted, or the cue ball in
+hand); ``on``, the ball on (0 red, 1 any colour, 2-7 yellow to black); ``ball_in_hand`` and
+``free_ball`` (0 or 1).
+
+Action: eight numbers in [-1, 1] (the normalised space Gymnasium recommends), mapped
+linearly onto [speed 0.2-8 m/s, aim -pi-pi rad, side offset, height offset (within 0.8 of the
+miscue limit, 0.5 R), elevation 0-0.5 rad, nomination 0-6, u 0-1, v 0-1] (``physical``).
+``nomination`` picks among the colours the player may nominate (when one must be nominated);
+(u, v) place the cue ball in hand in the D (radius sqrt(u) of the D's, at angle v of the half
+circle), moved to the nearest valid place if it touches a ball.
+
+Reward: the points the player at the table scored, less the points of a foul. Episode: a whole
+frame (``episode="frame"``: one agent plays both players) or one visit (``episode="visit"``:
+it ends when the turn passes); truncated after ``max_strokes`` strokes.
+
+Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import gymnasium as gym
+import numpy as np
+from gymnasium import spaces
+
+import snooker
+
+IDS = ["cue"] + [f"red{i}" for i in range(1, 16)] + [
+    "yellow", "green", "brown", "blue", "pink", "black"]
+ON = ["red", "colour", "yellow", "green", "brown", "blue", "pink", "black"]
+#: Offsets stay within 0.8 of the miscue limit (0.5 R, thesis eq. 7.7).
+OFFSET_MAX = 0.8 * 0.5 * 0.0262
+ACTION_LOW = np.array([0.2, -math.pi, -OFFSET_MAX, -OFFSET_MAX, 0.0, 0.0, 0.0, 0.0])
+ACTION_HIGH = np.array([8.0, math.pi, OFFSET_MAX, OFFSET_MAX, 0.5, 6.0, 1.0, 1.0])
+
+
+class SnookerFrameEnv(gym.Env):
+    """Frames of snooker, one stroke per step, under the real rules."""
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, reds: int = 15, start: str = "open", episode: str = "frame",
+                 max_strokes: int = 200):
+        if start not in ("open", "break_off"):
+            raise ValueError(f'start: "open" or "break_off", not {start!r}')
+        if episode not in ("frame", "visit"):
+            raise ValueError(f'episode: "frame" or "visit", not {episode!r}')
+        self.reds, self.start, self.episode, self.max_strokes = reds, start, episode, max_strokes
+        self.observation_space = spaces.Dict({
+            "balls": spaces.Box(-1.0, 4.0, (len(IDS), 2), np.float32),
+            "on": spaces.Discrete(len(ON)),
+            "ball_in_hand": spaces.Discrete(2),
+            "free_ball": spaces.Discrete(2),
+        })
+        self.action_space = spaces.Box(-1.0, 1.0, (len(ACTION_LOW),), dtype=np.float64)
+        self.frame: snooker.Frame = snooker.Frame.break_off()
+        self.strokes = 0
+
+    def _obs(self) -> dict:
+        f = self.frame
+        kinds, balls = f.kinds, f.balls
+        # The frame's own ids may differ from IDS (a file's): map by kind, reds in order.
+        slots = {}
+        reds = iter(range(1, 16))
+        for ball_id, kind in kinds.items():
+            slot = f"red{next(reds)}" if kind == "red" else kind
+            slots[slot] = balls[ball_id]
+        pos = np.array([slots.get(i, (-1.0, -1.0)) for i in IDS], np.float32)
+        return {
+            "balls": pos,
+            "on": ON.index(f.on),
+            "ball_in_hand": int(f.ball_in_hand),
+            "free_ball": int(f.free_ball),
+        }
+
+    def reset(self, seed=None, options=None):
+        super().reset(seed=seed)
+        if self.start == "break_off":
+            self.frame = snooker.Frame.break_off()
+        else:
+            self.frame = snooker.Frame.open_table(self.reds, int(self.np_random.integers(2**63)))
+        self.strokes = 0
+        return self._obs(), {}
+
+    def _choices(self, action) -> tuple:
+        """The nomination and the cue ball's place the action asks for, as the frame allows."""
+        f = self.frame
+        nominated = None
+        noms = f.legal_nominations
+        if noms and f.nominated is None and (f.on == "colour" or f.free_ball):
+            nominated = noms[min(int(action[5]), len(noms) - 1) % len(noms)]
+        cue_ball = None
+        if f.ball_in_hand:
+            (cx, cy), radius = f.the_d
+            r = radius * math.sqrt(action[6])
+            angle = math.pi / 2 + math.pi * action[7]
+            cue_ball = f.nearest_placement((cx + r * math.cos(angle), cy + r * math.sin(angle)))
+        return nominated, cue_ball
+
+    @staticmethod
+    def physical(action) -> np.ndarray:
+        """The action in its physical units (see the module's docs)."""
+        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
+        return ACTION_LOW + (a + 1.0) / 2.0 * (ACTION_HIGH - ACTION_LOW)
+
+    def step(self, action):
+        a = self.physical(action)
+        speed, aim, side, height, elevation = (float(x) for x in a[:5])
+        nominated, cue_ball = self._choices(a)
+        strike = {"speed": speed, "aim": aim, "offset": [side, height], "elevation": elevation}
+        try:
+            verdict, after = self.frame.play(strike, nominated=nominated, cue_ball=cue_ball)
+        except ValueError:
+            # A strike the cue cannot play (the tip would go through the cloth): level and
+            # central instead.
+            strike.update(offset=[0.0, 0.0], elevation=0.0)
+            verdict, after = self.frame.play(strike, nominated=nominated, cue_ball=cue_ball)
+        player = self.frame.to_play
+        self.strokes += 1
+        reward = float(verdict.points) - float(verdict.foul_points)
+        terminated = verdict.frame_over
+        if after is not None:
+            self.frame = after
+            if self.episode == "visit" and after.to_play != player:
+                terminated = True
+        truncated = not terminated and self.strokes >= self.max_strokes
+        info = {
+            "player": player,
+            "foul": verdict.foul,
+            "potted": verdict.potted,
+            "points": verdict.points,
+            "scores": verdict.scores,
+            "winner": verdict.winner,
+        }
+        return self._obs(), reward, terminated, truncated, info
+
+
+if __name__ == "__main__":
+    env = SnookerFrameEnv(reds=6)
+    obs, _ = env.reset(seed=1)
+    done = False
+    while not done:
+        obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+        done = terminated or truncated
+        print(f"stroke {env.strokes}: player {info['player']} {info['foul'] or 'legal'}, "
+              f"potted {info['potted']}, reward {reward:+.0f}, scores {info['scores']}")
+    print("winner:", info["winner"])

@@ -1,0 +1,116 @@
+//! Snookered (WPBSA Section 2 Rule 17; Section 3 Rule 12 "Snookered after a Foul"): the cue
+//! ball is snookered when it cannot hit both extreme edges of any ball on in straight lines,
+//! only balls not on obstructing (cushions do not). With the cue ball in hand, only if that
+//! holds from every position in the D (Section 2 Rule 17).
+//!
+//! Geometry: to hit an extreme edge of a ball on at O, the cue ball's centre runs from C along
+//! a tangent to the circle of radius 2R about O, to the tangent point T where it grazes the
+//! ball. That edge can be hit when no ball not on comes within 2R of the segment C-T (the cue
+//! ball sweeps a band 2R wide around it). A cue ball touching a ball on can play it.
+
+use crate::in_hand::TheD;
+use snooker_engine::Vec3;
+
+/// Clearance below which a ball obstructs, relative to 2R: exact touching does not obstruct.
+const TOUCH: f64 = 1e-12;
+
+/// Squared distance from `p` to the segment `a`-`b` (plan).
+fn segment_distance2(p: Vec3, a: Vec3, b: Vec3) -> f64 {
+    let ab = b - a;
+    let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+    (a + t * ab - p).norm_squared()
+}
+
+/// The two tangent points: where the cue ball's centre is when it grazes the ball at `target`
+/// on one extreme edge or the other, coming straight from `cue`; `None` when they touch.
+pub fn edge_contacts(cue: Vec3, target: Vec3, radius: f64) -> Option<[Vec3; 2]> {
+    let cue = Vec3::new(cue.x, cue.y, 0.0);
+    let d = Vec3::new(target.x, target.y, 0.0) - cue;
+    let dist = d.norm();
+    let two_r = 2.0 * radius;
+    if dist <= two_r {
+        return None;
+    }
+    let u = d / dist;
+    let n = Vec3::new(-u.y, u.x, 0.0);
+    let (sin, cos) = (two_r / dist, (1.0 - (two_r / dist).powi(2)).sqrt());
+    let along = dist * cos;
+    Some([1.0, -1.0].map(|side| cue + along * (cos * u + side * sin * n)))
+}
+
+/// True when the cue ball at `cue` can hit both extreme edges of the ball at `target` in
+/// straight lines, none of `obstacles` (centres) in the way.
+pub fn both_edges_clear(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> bool {
+    let Some(contacts) = edge_contacts(cue, target, radius) else {
+        return true;
+    };
+    let cue = Vec3::new(cue.x, cue.y, 0.0);
+    let limit = (2.0 * radius * (1.0 - TOUCH)).powi(2);
+    contacts.iter().all(|&t| {
+        obstacles
+            .iter()
+            .all(|o| segment_distance2(Vec3::new(o.x, o.y, 0.0), cue, t) >= limit)
+    })
+}
+
+/// True when the cue ball at `cue` is snookered: no ball of `on` can be hit on both extreme
+/// edges, with the balls `not_on` obstructing. With nothing on, nothing can be hit: snookered.
+pub fn is_snookered(cue: Vec3, on: &[Vec3], not_on: &[Vec3], radius: f64) -> bool {
+    !on.iter().any(|&o| both_edges_clear(cue, o, not_on, radius))
+}
+
+/// Spacing of the positions of the D tried for a cue ball in hand, m.
+pub const IN_HAND_STEP: f64 = 0.005;
+
+/// True when the cue ball in hand is snookered from every position in the D, sampled on a
+/// grid [`IN_HAND_STEP`] apart (positions touching a ball are not places it could be played
+/// from and are skipped). Stops at the first position that is not snookered.
+pub fn is_snookered_in_hand(d: &TheD, on: &[Vec3], not_on: &[Vec3], radius: f64) -> bool {
+    let two_r2 = (2.0 * radius).powi(2);
+    d.grid(IN_HAND_STEP).all(|p| {
+        let blocked = on.iter().chain(not_on).any(|b| {
+            let (dx, dy) = (b.x - p.x, b.y - p.y);
+            dx * dx + dy * dy <= two_r2
+        });
+        blocked || is_snookered(p, on, not_on, radius)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const R: f64 = 0.02625;
+
+    fn v(x: f64, y: f64) -> Vec3 {
+        Vec3::new(x, y, R)
+    }
+
+    #[test]
+    fn the_tangent_points_graze_the_ball_at_2r() {
+        let [a, b] = edge_contacts(v(0.5, 0.5), v(1.5, 0.7), R).unwrap();
+        for t in [a, b] {
+            assert!(((t - Vec3::new(1.5, 0.7, 0.0)).norm() - 2.0 * R).abs() < 1e-12);
+            // Tangent: the path is perpendicular to the radius at T.
+            let path = t - Vec3::new(0.5, 0.5, 0.0);
+            assert!(path.dot(&(t - Vec3::new(1.5, 0.7, 0.0))).abs() < 1e-12);
+        }
+        assert!(edge_contacts(v(0.5, 0.5), v(0.5 + 2.0 * R, 0.5), R).is_none());
+    }
+
+    #[test]
+    fn a_ball_in_the_line_snookers_one_to_the_side_half_snookers() {
+        let (cue, red) = (v(1.0, 0.9), v(2.0, 0.9));
+        assert!(!is_snookered(cue, &[red], &[], R));
+        // Full in the line.
+        assert!(is_snookered(cue, &[red], &[v(1.5, 0.9)], R));
+        // Off the line by 2.5R, midway: the nearer edge's path runs about R off the centre
+        // line there, and the cue ball's band 2R about it reaches the obstacle.
+        assert!(is_snookered(cue, &[red], &[v(1.5, 0.9 + 2.5 * R)], R));
+        // Off by 4.5R: both edges clear.
+        assert!(!is_snookered(cue, &[red], &[v(1.5, 0.9 + 4.5 * R)], R));
+        // Balls on never obstruct; a second red in the open does.
+        assert!(!is_snookered(cue, &[red, v(1.5, 0.9)], &[], R));
+        assert!(!is_snookered(cue, &[red, v(1.0, 0.3)], &[v(1.5, 0.9)], R));
+    }
+}
