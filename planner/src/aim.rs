@@ -8,7 +8,7 @@ use crate::line::{Line, ShotKind};
 use crate::problem::Problem;
 use crate::trial::{Departure, Trial, angle};
 use snooker_engine::cue::Cue;
-use snooker_engine::{EventKind, Vec3};
+use snooker_engine::{EventKind, Shot, Vec3};
 
 /// Heading error at which the aim is taken as found, rad: the cue ball's end position then
 /// moves by micrometres (a pot's window is ~1e-2 rad wide).
@@ -136,6 +136,11 @@ impl Problem {
     /// steps bounded before; the trial of the best heading found (None if the line's
     /// geometry is closed or no heading could be struck at all).
     pub fn aimed(&self, stroke: &Stroke, line: &Line) -> Option<Trial> {
+        self.aimed_shot(stroke, line).map(|(t, _)| t)
+    }
+
+    /// [`Problem::aimed`], with the shot of the trial returned.
+    pub fn aimed_shot(&self, stroke: &Stroke, line: &Line) -> Option<(Trial, Shot)> {
         let at = self.aim_point(stroke.mouth);
         let (first, cut) = self.line_aim(line, at)?;
         let r = self.setup.params.ball_radius;
@@ -156,7 +161,7 @@ impl Problem {
             ShotKind::Direct => MAX_AIM_TRIALS,
             _ => MAX_LINE_AIM_TRIALS,
         };
-        let mut best: Option<(f64, Trial)> = None;
+        let mut best: Option<(f64, Trial, Shot)> = None;
         let mut prev: Option<(f64, f64)> = None;
         // Headings on either side of the root, with their errors, once found.
         let mut bracket: Option<((f64, f64), (f64, f64))> = None;
@@ -183,11 +188,12 @@ impl Problem {
                 // crosses the line through the aim point across its way is what pots it.
                 ShotKind::Double | ShotKind::Kiss => self.path_error(&shot, &dep, at),
             };
-            let better = best.as_ref().is_none_or(|(be, _)| e.abs() < be.abs());
+            let better = best.as_ref().is_none_or(|(be, _, _)| e.abs() < be.abs());
+            let done = e.abs() < AIM_TOLERANCE;
             if better {
-                best = Some((e, t));
+                best = Some((e, t, shot));
             }
-            if e.abs() < AIM_TOLERANCE {
+            if done {
                 break;
             }
             bracket = match (bracket, prev) {
@@ -214,6 +220,6 @@ impl Problem {
             prev = Some((aim, e));
             aim = next;
         }
-        best.map(|(_, t)| t)
+        best.map(|(_, t, shot)| (t, shot))
     }
 }

@@ -24,6 +24,7 @@
 //! ```
 
 pub mod aim;
+pub mod explore;
 pub mod line;
 pub mod noise;
 pub mod problem;
@@ -33,6 +34,8 @@ pub mod scene_out;
 pub mod search;
 pub mod trial;
 
+pub use aim::Stroke;
+pub use explore::{Objective, Scored, explore, refine};
 pub use line::{Line, ShotKind};
 pub use noise::{StrikeErrors, execute, rng_for};
 pub use problem::{

@@ -319,6 +319,20 @@ impl Problem {
             // The scene's own strike is ignored: the cue ball lies where it was before it.
             setup.balls[s.index].state = s.before;
         }
+        let problem = Problem::for_setup(setup, scene.options, request)?;
+        problem.check_target()?;
+        Ok(problem)
+    }
+
+    /// Checks `request` against the balls of `setup` (at rest, no strike applied), simulated
+    /// with `options`: as [`Problem::new`], but the target is not checked (a caller valuing
+    /// strokes by its own [`crate::explore::Objective`] may give any point, such as where the
+    /// cue ball lies).
+    pub fn for_setup(
+        setup: Setup,
+        options: SimOptions,
+        request: Request,
+    ) -> Result<Problem, PlanError> {
         let p = setup.params;
         let r = p.ball_radius;
         let index = |field: RequestField, id: &str| {
@@ -380,25 +394,6 @@ impl Problem {
             return Err(bad(RequestField::Target, "the target must be finite"));
         }
         let target = Vec3::new(x, y, r);
-        if let Some(why) = setup.table.placement_error(target, r) {
-            return Err(bad(
-                RequestField::Target,
-                format!("a ball cannot stop there: {why}"),
-            ));
-        }
-        for (i, b) in setup.balls.iter().enumerate() {
-            let gap = (b.state.pos - target).xy().norm();
-            if i != cue && i != object && b.state.motion.in_play() && gap < 2.0 * r {
-                return Err(bad(
-                    RequestField::Target,
-                    format!(
-                        "the cue ball would overlap \"{}\" there ({:.1} mm apart, centres)",
-                        b.id,
-                        gap * 1e3
-                    ),
-                ));
-            }
-        }
         if !(request.tolerance.is_finite() && request.tolerance > 0.0) {
             return Err(bad(
                 RequestField::Tolerance,
@@ -425,7 +420,7 @@ impl Problem {
         };
         Ok(Problem {
             setup,
-            options: scene.options,
+            options,
             request,
             cue,
             object,
@@ -434,6 +429,37 @@ impl Problem {
             plant_ok,
             shots: AtomicU64::new(0),
         })
+    }
+
+    /// Checks that a ball could stop at the target: on the cloth, clear of every ball but the
+    /// cue ball and the object ball.
+    fn check_target(&self) -> Result<(), PlanError> {
+        let (target, r, cue, object) = (
+            self.target,
+            self.setup.params.ball_radius,
+            self.cue,
+            self.object,
+        );
+        if let Some(why) = self.setup.table.placement_error(target, r) {
+            return Err(bad(
+                RequestField::Target,
+                format!("a ball cannot stop there: {why}"),
+            ));
+        }
+        for (i, b) in self.setup.balls.iter().enumerate() {
+            let gap = (b.state.pos - target).xy().norm();
+            if i != cue && i != object && b.state.motion.in_play() && gap < 2.0 * r {
+                return Err(bad(
+                    RequestField::Target,
+                    format!(
+                        "the cue ball would overlap \"{}\" there ({:.1} mm apart, centres)",
+                        b.id,
+                        gap * 1e3
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// True when the cue ball may strike ball `b` first: the object ball, or a ball a plant
