@@ -2,7 +2,9 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, batch, discrepancy, impact, plan, referee, simulate, synth, validate};
+use snooker::cmd::{
+    self, batch, discrepancy, impact, plan, play, referee, simulate, synth, validate,
+};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -40,6 +42,11 @@ enum Command {
     /// Referee a frame of snooker: simulate the frame's strike, judge it by the rules (WPBSA),
     /// write the verdict and the next frame; several frames play a sequence of strokes.
     Referee(referee::Args),
+    /// Play snooker from a frame file: stroke after stroke chosen by the player (candidate pots
+    /// of every kind, valued by the position they leave, sampled under execution noise) and
+    /// played with the noise, for one visit or the whole frame; the play log, a summary, a
+    /// recording.
+    Play(play::Args),
 }
 
 fn main() -> ExitCode {
@@ -73,5 +80,6 @@ fn main() -> ExitCode {
         Command::Plan(a) => plan::run(a),
         Command::Batch(a) => batch::run(a),
         Command::Referee(a) => referee::run(a),
+        Command::Play(a) => play::run(a),
     }
 }

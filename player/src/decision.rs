@@ -51,19 +51,19 @@ impl PlanKind {
 pub struct Considered {
     /// The ball meant to be potted (its id); `""` for a safety.
     pub pot: String,
-    /// The ball the cue ball is sent at first (the ball potted, a plant's first ball, the
-    /// ball a safety is played off).
-    pub ball: String,
     /// The pocket (`""` for a safety).
     pub pocket: String,
     /// The kind.
     pub kind: PlanKind,
-    /// The ball planted through, kissed off, or the double's cushions.
-    pub via: Vec<String>,
     /// Share of the noise samples that potted the ball legally (0 for a safety).
     pub pot_probability: f64,
     /// Where the cue ball stops when the strike is played exactly, m.
     pub cue_to: [f64; 2],
+    /// The ball the cue ball is sent at first (the ball potted, a plant's first ball, the
+    /// ball a safety is played off).
+    pub ball: String,
+    /// The ball planted through, kissed off, or the double's cushions.
+    pub via: Vec<String>,
     /// Expected value of the stroke in points (samples' mean), to the player.
     pub value: f64,
     /// Noise samples simulated for it.
