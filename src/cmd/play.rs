@@ -112,7 +112,7 @@ fn summary<'a>(file: &'a str, args: &Args, opts: &PlayOptions, game: &Game) -> S
         points[p] += s.verdict.points;
         if s.decision.plan.kind != snooker_player::PlanKind::Safety {
             attempted[p] += 1;
-            if s.verdict.legal() && s.verdict.potted.iter().any(|b| *b == s.decision.plan.pot) {
+            if s.verdict.legal() && s.verdict.potted.contains(&s.decision.plan.pot) {
                 made[p] += 1;
             }
         }
