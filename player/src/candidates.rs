@@ -43,6 +43,9 @@ pub struct LineCandidate {
     pub line: Line,
     /// Estimated worth, points (chance times the ball's worth).
     pub estimate: f64,
+    /// The pot's chance in closed form ([`Direct::chance`]; [`OTHER_LINE_PRIOR`] for a line
+    /// that is not a direct pot).
+    pub chance: f64,
 }
 
 /// The nomination a stroke at the ball of `kind` needs in `frame`, if one is needed: the
@@ -153,27 +156,29 @@ pub fn lines(targets: &[Target], valuer: &Valuer) -> Vec<LineCandidate> {
         let f = &t.frame;
         let r = f.params().ball_radius;
         let balls = f.balls();
-        let worth = ball_value(f, balls[t.ball].kind) + valuer.continuation;
+        let value = ball_value(f, balls[t.ball].kind);
+        let worth = value + valuer.future(f, value);
         let Some(cue) = f.cue_index() else {
             continue;
         };
         let flat = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
         let pocket = &f.table().pockets[t.pocket];
         for line in t.problem.requested_lines() {
-            let estimate = match line.kind {
+            let chance = match line.kind {
                 ShotKind::Direct => Direct::new(
                     flat(balls[cue].state.pos),
                     flat(balls[t.ball].state.pos),
                     pocket,
                     r,
                 )
-                .map_or(0.0, |d| d.chance(pocket, valuer.sd, r) * worth),
-                _ => OTHER_LINE_PRIOR * worth,
+                .map_or(0.0, |d| d.chance(pocket, valuer.sd, r)),
+                _ => OTHER_LINE_PRIOR,
             };
             out.push(LineCandidate {
                 target: k,
                 line,
-                estimate,
+                estimate: chance * worth,
+                chance,
             });
         }
     }

@@ -9,7 +9,7 @@ use snooker_rules::{Frame, Next, Player as Side, Verdict};
 use std::time::Instant;
 
 /// The default effort: simulated shots per stroke.
-pub const DEFAULT_EFFORT: u64 = 1500;
+pub const DEFAULT_EFFORT: u64 = 4000;
 /// The default stroke cap of a frame.
 pub const DEFAULT_MAX_STROKES: usize = 300;
 

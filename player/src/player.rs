@@ -23,25 +23,34 @@ use crate::decision::{Considered, Decision, PlanKind};
 use crate::outcome::outcome;
 use crate::value::Valuer;
 use rayon::prelude::*;
-use snooker_engine::{BallKind, Cue, Shot, Vec3};
+use snooker_engine::{BallKind, Cue, EventKind, Shot, Vec3};
 use snooker_planner::{Objective, Problem, Scored, Stroke, Trial, explore, rng_for};
-use snooker_rules::Frame;
+use snooker_rules::{Frame, Next};
 
 /// Share of the effort spent on the deterministic search (the rest on noise samples).
-pub const DETERMINISTIC_SHARE: f64 = 0.6;
+pub const DETERMINISTIC_SHARE: f64 = 0.75;
 /// Lines explored at a time (in parallel; the budget is checked between batches).
 const LINE_BATCH: usize = 4;
-/// Cue speeds of the stroke grid, m/s.
-const SPEEDS: [f64; 5] = [0.45, 0.8, 1.3, 2.1, 3.4];
-/// Heights of the stroke grid, as shares of the bounds' reach (screw to follow).
-const HEIGHTS: [f64; 5] = [-0.8, -0.4, 0.0, 0.4, 0.8];
+/// The coarse grid every line is tried with first: cue speeds (m/s), heights (shares of the
+/// bounds' reach: screw to follow), no side.
+const COARSE_SPEEDS: [f64; 4] = [0.5, 1.0, 1.9, 3.5];
+const COARSE_HEIGHTS: [f64; 3] = [-0.7, 0.0, 0.7];
+/// The fine grid the best lines get then: speeds, heights and sides (shares of the reach).
+const FINE_SPEEDS: [f64; 8] = [0.35, 0.5, 0.7, 1.0, 1.4, 1.9, 2.6, 3.6];
+const FINE_HEIGHTS: [f64; 5] = [-0.8, -0.4, 0.0, 0.4, 0.8];
+const FINE_SIDES: [f64; 3] = [-0.5, 0.0, 0.5];
+/// Share of the deterministic search's budget the coarse pass may spend.
+const COARSE_SHARE: f64 = 0.35;
+/// Lines given the fine grid at most.
+const FINE_LINES: usize = 6;
 /// Most strokes of one line taken to the noise samples.
 const PER_LINE: usize = 2;
 /// Fewest and most candidates sampled under noise.
 const MIN_CANDIDATES: usize = 4;
 const MAX_CANDIDATES: usize = 12;
-/// Fewest noise samples per candidate.
+/// Fewest and most noise samples per candidate.
 const MIN_SAMPLES: usize = 8;
+const MAX_SAMPLES: usize = 96;
 /// Below this expected value (points) of the best pot, safeties are considered too.
 pub const SAFETY_BELOW: f64 = 1.0;
 /// Places for the cue ball in hand tried, and how far apart (m).
@@ -78,35 +87,78 @@ struct Evaluated {
     considered: Considered,
 }
 
-/// The pot's value to the player, without noise: the stroke must pot the ball on legally.
+/// The pot's value to the player, without noise: the stroke must pot the ball on legally;
+/// its value is the points and the position left, counted as robust to the speed's noise
+/// ([`Valuer::robust`]).
 struct PotObjective<'a> {
     frame: &'a Frame,
     valuer: &'a Valuer,
     pot: &'a str,
 }
 
-impl Objective for PotObjective<'_> {
-    fn value(&self, _: &Problem, _: &Trial, shot: &Shot) -> Option<f64> {
-        let v = self.frame.judge(shot).ok()?;
-        let o = outcome(self.frame, &v, self.valuer, Some(self.pot));
-        o.potted.then_some(o.value)
+/// The cue ball's last leg in `shot`: from its last impact (or its start) to where it
+/// stopped: its length and unit heading.
+fn last_leg(shot: &Shot, cue: usize) -> (f64, Vec3) {
+    let start = shot
+        .events
+        .iter()
+        .rev()
+        .find(|e| {
+            e.balls.contains(&cue) && matches!(e.kind, EventKind::BallBall | EventKind::BallCushion)
+        })
+        .map_or(0.0, |e| e.t);
+    let p = &shot.params;
+    let a = shot.tracks[cue].state_at(start, p).pos;
+    let b = shot.tracks[cue].state_at(shot.duration, p).pos;
+    let d = (b - a).xy();
+    let len = d.norm();
+    if len > 0.0 {
+        (len, Vec3::new(d.x / len, d.y / len, 0.0))
+    } else {
+        (0.0, Vec3::zeros())
     }
 }
 
-/// The stroke grid of the deterministic search.
-fn grid(frame: &Frame) -> Vec<Stroke> {
+impl Objective for PotObjective<'_> {
+    fn value(&self, problem: &Problem, trial: &Trial, shot: &Shot) -> Option<f64> {
+        let v = self.frame.judge(shot).ok()?;
+        let o = outcome(self.frame, &v, self.valuer, Some(self.pot));
+        if !o.potted {
+            return None;
+        }
+        match self.frame.next(&v) {
+            Next::Play(next) if next.state().to_play == self.frame.state().to_play => {
+                let (leg, heading) = last_leg(shot, problem.cue);
+                let gain = v.points as f64 - v.foul_points() as f64;
+                Some(gain + self.valuer.robust(&next, trial.cue.speed, leg, heading))
+            }
+            _ => Some(o.value),
+        }
+    }
+}
+
+/// What a miss is guessed to cost when candidates are ranked before their noise samples, as a
+/// share of the rest of the frame's break ([`Valuer::future`]): the opponent's chances from
+/// wherever the balls stop.
+pub const MISS_SHARE: f64 = 0.3;
+
+/// A grid of strokes: every combination of the cue speeds, the heights and the sides (shares
+/// of the bounds' reach).
+fn grid(frame: &Frame, speeds: &[f64], heights: &[f64], sides: &[f64]) -> Vec<Stroke> {
     let b = candidates::bounds(frame);
     let reach = b.height.hi;
     let mut out = Vec::new();
-    for &speed in &SPEEDS {
-        for &h in &HEIGHTS {
-            out.push(Stroke {
-                speed,
-                side: 0.0,
-                height: h * reach,
-                elevation: ELEVATION,
-                mouth: 0.0,
-            });
+    for &speed in speeds {
+        for &h in heights {
+            for &side in sides {
+                out.push(Stroke {
+                    speed,
+                    side: side * reach,
+                    height: h * reach,
+                    elevation: ELEVATION,
+                    mouth: 0.0,
+                });
+            }
         }
     }
     out
@@ -157,7 +209,7 @@ fn sample(
         .collect();
     // A sample the engine could not simulate counts as the worst: a foul's and the
     // opponent in hand (it does not happen on a valid frame: the engine always simulates).
-    let worst = -(7.0 + valuer.continuation * 2.0);
+    let worst = -(7.0 + valuer.future(frame, 0.0));
     let total: f64 = results.iter().map(|r| r.map_or(worst, |x| x.0)).sum();
     let pots = results.iter().filter(|r| r.is_some_and(|x| x.1)).count();
     (total / n as f64, pots as f64 / n as f64, n as u64)
@@ -210,46 +262,124 @@ impl Player {
         let (frame, placement, place_index) = (place.frame, place.placement, place.index);
         let targets = candidates::targets(frame);
         let lines = candidates::lines(&targets, valuer);
-        let strokes = grid(frame);
-        let mut found: Vec<(usize, Scored)> = Vec::new();
-        for (batch_index, batch) in lines.chunks(LINE_BATCH).enumerate() {
-            if batch_index > 0 && shots(&targets) >= budget {
-                break;
-            }
-            let results: Vec<Vec<Scored>> = batch
+        // (line, stroke, estimated expected value).
+        let mut found: Vec<(usize, Scored, f64)> = Vec::new();
+        let miss_cost = MISS_SHARE * valuer.future(frame, 0.0);
+        let run = |indices: &[usize], strokes: &[Stroke]| -> Vec<(usize, Scored, f64)> {
+            let results: Vec<Vec<Scored>> = indices
                 .par_iter()
-                .map(|lc: &LineCandidate| {
+                .map(|&li| {
+                    let lc: &LineCandidate = &lines[li];
                     let t = &targets[lc.target];
                     let objective = PotObjective {
                         frame: &t.frame,
                         valuer,
                         pot: &t.frame.balls()[t.ball].id,
                     };
-                    let mut s = explore(&t.problem, &lc.line, &strokes, &objective);
+                    let mut s = explore(&t.problem, &lc.line, strokes, &objective);
                     // Best first; ties in the grid's order.
                     s.sort_by(|a, b| b.value.total_cmp(&a.value));
                     s.truncate(PER_LINE);
                     s
                 })
                 .collect();
-            for (k, r) in results.into_iter().enumerate() {
-                let line_index = batch_index * LINE_BATCH + k;
-                found.extend(r.into_iter().map(|s| (line_index, s)));
+            indices
+                .iter()
+                .zip(results)
+                .flat_map(|(&li, r)| {
+                    let c = lines[li].chance;
+                    r.into_iter().map(move |s| {
+                        let ev = c * s.value - (1.0 - c) * miss_cost;
+                        (li, s, ev)
+                    })
+                })
+                .collect()
+        };
+        // Coarse: every line in the order of its first estimate, while the budget lasts.
+        let coarse = grid(frame, &COARSE_SPEEDS, &COARSE_HEIGHTS, &[0.0]);
+        let coarse_budget = (COARSE_SHARE * budget as f64) as u64;
+        let all: Vec<usize> = (0..lines.len()).collect();
+        for (batch_index, batch) in all.chunks(LINE_BATCH).enumerate() {
+            if batch_index > 0 && shots(&targets) >= coarse_budget {
+                break;
+            }
+            found.extend(run(batch, &coarse));
+        }
+        // Fine: the lines whose coarse strokes promise most, best first, while it lasts.
+        let mut best_of_line: Vec<(usize, f64)> = Vec::new();
+        for (li, _, ev) in &found {
+            match best_of_line.iter_mut().find(|(l, _)| l == li) {
+                Some(b) => b.1 = b.1.max(*ev),
+                None => best_of_line.push((*li, *ev)),
             }
         }
+        best_of_line.sort_by(|a, b| b.1.total_cmp(&a.1));
+        best_of_line.truncate(FINE_LINES);
+        let fine = grid(frame, &FINE_SPEEDS, &FINE_HEIGHTS, &FINE_SIDES);
+        let order: Vec<usize> = best_of_line.iter().map(|b| b.0).collect();
+        for (batch_index, batch) in order.chunks(2).enumerate() {
+            if batch_index > 0 && shots(&targets) >= budget {
+                break;
+            }
+            found.extend(run(batch, &fine));
+        }
         let mut used = shots(&targets);
-        found.sort_by(|a, b| b.1.value.total_cmp(&a.1.value));
+        found.sort_by(|a, b| b.2.total_cmp(&a.2));
+        if std::env::var("PLAYER_DEBUG").is_ok() {
+            for lc in &lines {
+                let t = &targets[lc.target];
+                eprintln!(
+                    "line {} {} {:?} chance {:.2} est {:.2}",
+                    t.frame.balls()[t.ball].id,
+                    t.frame.table().pockets[t.pocket].name,
+                    lc.line.kind,
+                    lc.chance,
+                    lc.estimate
+                );
+            }
+            for (li, s, ev) in &found {
+                let t = &targets[lines[*li].target];
+                eprintln!(
+                    "found {} {} {:?} speed {:.2} h {:.4} side {:.4} value {:.2} ev {:.2} cue_to {:.2},{:.2}",
+                    t.frame.balls()[t.ball].id,
+                    t.frame.table().pockets[t.pocket].name,
+                    lines[*li].line.kind,
+                    s.stroke.speed,
+                    s.stroke.height,
+                    s.stroke.side,
+                    s.value,
+                    ev,
+                    s.trial.cue_final.x,
+                    s.trial.cue_final.y
+                );
+            }
+        }
+        // The same strike found by both passes is sampled once.
+        let mut seen: Vec<[u64; 5]> = Vec::new();
+        found.retain(|(_, s, _)| {
+            let c = s.trial.cue;
+            let key = [
+                c.speed.to_bits(),
+                c.aim.to_bits(),
+                c.offset[0].to_bits(),
+                c.offset[1].to_bits(),
+                c.elevation.to_bits(),
+            ];
+            let fresh = !seen.contains(&key);
+            seen.push(key);
+            fresh
+        });
         let k = ((samples_budget / (MIN_SAMPLES as u64 * 4)) as usize)
             .clamp(MIN_CANDIDATES, MAX_CANDIDATES)
             .min(found.len());
         let n = (samples_budget as usize)
             .checked_div(k)
-            .map_or(0, |n| n.max(MIN_SAMPLES));
-        let chosen: Vec<&(usize, Scored)> = found.iter().take(k).collect();
+            .map_or(0, |n| n.clamp(MIN_SAMPLES, MAX_SAMPLES));
+        let chosen: Vec<&(usize, Scored, f64)> = found.iter().take(k).collect();
         let evaluated: Vec<Evaluated> = chosen
             .iter()
             .enumerate()
-            .map(|(c, (li, s))| {
+            .map(|(c, (li, s, _))| {
                 let lc = &lines[*li];
                 let t = &targets[lc.target];
                 let pot_id = t.frame.balls()[t.ball].id.clone();

@@ -15,14 +15,18 @@ use snooker_rules::{Colour, Frame, On};
 pub struct Valuer {
     /// Standard deviation of the cue ball's direction used for the next stroke's chance, rad.
     pub sd: f64,
-    /// Points a pot is worth beyond the ball's own value: what potting it leads to (the next
-    /// ball on and the rest of the break).
-    pub continuation: f64,
+    /// Standard deviation of the cue speed, m/s: how far along its way the cue ball may stop
+    /// short or run on ([`Valuer::robust`]).
+    pub speed_sd: f64,
+    /// The odds of the player's pots counted on for the rest of a break: a pot leads on to
+    /// about `odds` more pots' worth of points ([`Valuer::future`]).
+    pub odds: f64,
 }
 
-/// Points a pot leads to beyond its own value (see [`Valuer::continuation`]): about a colour's
-/// worth when in position.
-pub const CONTINUATION: f64 = 4.0;
+/// The rest of a break counted on after a pot, in pots (see [`Valuer::odds`]): a player who
+/// pots nine in ten goes on for nine more on average (q / (1 - q) at q = 0.9), which is what
+/// makes staying at the table worth more than the points of one ball.
+pub const ODDS: f64 = 9.0;
 /// Spacing of the D's grid when the cue ball is in hand, m.
 pub const IN_HAND_STEP: f64 = 0.05;
 
@@ -35,12 +39,85 @@ impl Valuer {
         let floor = chance::direction_sd(&Noise::STANDARD, p);
         Valuer {
             sd: chance::direction_sd(noise, p).max(floor),
-            continuation: CONTINUATION,
+            speed_sd: noise.speed.max(Noise::STANDARD.speed),
+            odds: ODDS,
         }
     }
 
+    /// Points a pot of a ball worth `value` leads to beyond itself in `frame`: the points
+    /// still on the table after it, at most [`Valuer::odds`] pots at the average points a pot
+    /// is worth from here (reds with their colours at 8, then the colours in order).
+    pub fn future(&self, frame: &Frame, value: f64) -> f64 {
+        let reds = frame.reds_on_table() as f64;
+        let colours: Vec<Colour> = Colour::ALL
+            .into_iter()
+            .filter(|&c| frame.has_colour(c))
+            .collect();
+        let colour_points: f64 = colours.iter().map(|c| c.value() as f64).sum();
+        // With a colour on after a red, that colour and then the reds with theirs.
+        let (points, pots) = match frame.state().on {
+            On::Closing(_) => (colour_points, colours.len() as f64),
+            On::Red => (
+                8.0 * reds + colour_points,
+                2.0 * reds + colours.len() as f64,
+            ),
+            On::Colour => (
+                7.0 + 8.0 * reds + colour_points,
+                1.0 + 2.0 * reds + colours.len() as f64,
+            ),
+        };
+        let left = (points - value).max(0.0);
+        if pots <= 1.0 {
+            return 0.0;
+        }
+        left.min(self.odds * points / pots)
+    }
+
+    /// The value of `frame` to the player to play it, the cue ball having stopped there after
+    /// a stroke at cue speed `cue_speed` whose last leg ran `leg` metres along the unit plan
+    /// vector `heading`: the mean of [`Valuer::from`] over where the cue ball stops when the
+    /// speed errs (the distance a ball runs goes as its speed squared, so a leg of length L
+    /// ends 2 L sd / v further or shorter for a speed error sd; three-point Gauss–Hermite
+    /// over that normal spread; a point where the cue ball would have run into a ball counts
+    /// nothing). A position on a knife's edge counts for less than one the noise cannot spoil.
+    pub fn robust(&self, frame: &Frame, cue_speed: f64, leg: f64, heading: Vec3) -> f64 {
+        let Some(i) = frame.cue_index() else {
+            return self.position(frame);
+        };
+        if frame.state().ball_in_hand {
+            return self.position(frame);
+        }
+        let at = frame.balls()[i].state.pos;
+        let spread = 2.0 * leg * self.speed_sd / cue_speed.max(1e-3);
+        let (l, wid) = (frame.table().length, frame.table().width);
+        let r = frame.params().ball_radius;
+        const Z: [f64; 3] = [-1.224_744_871_391_589, 0.0, 1.224_744_871_391_589];
+        const W: [f64; 3] = [1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0];
+        let others: Vec<Vec3> = frame
+            .balls()
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| j != i)
+            .map(|(_, b)| b.state.pos)
+            .collect();
+        Z.iter()
+            .zip(W)
+            .map(|(&z, w)| {
+                let p = at + z * spread * heading;
+                let p = Vec3::new(p.x.clamp(r, l - r), p.y.clamp(r, wid - r), at.z);
+                // Running on into a ball: a cannon, whose outcome is not counted on.
+                let blocked = z != 0.0 && others.iter().any(|o| (o - p).xy().norm() < 2.0 * r);
+                if blocked {
+                    0.0
+                } else {
+                    w * self.from(frame, p).0
+                }
+            })
+            .sum()
+    }
+
     /// The value of `frame` to the player to play it: the best over the balls on and the
-    /// pockets of the pot's chance times (the ball's value + [`Valuer::continuation`]); with
+    /// pockets of the pot's chance times (the ball's value + [`Valuer::future`]); with
     /// the cue ball in hand, the best place in the D. 0 when nothing is on.
     pub fn position(&self, frame: &Frame) -> f64 {
         match frame.cue_index() {
@@ -84,7 +161,8 @@ impl Valuer {
         for b in frame.balls_on() {
             let ball = balls[b].state.pos;
             let ball = Vec3::new(ball.x, ball.y, 0.0);
-            let worth = ball_value(frame, balls[b].kind) + self.continuation;
+            let value = ball_value(frame, balls[b].kind);
+            let worth = value + self.future(frame, value);
             let others: Vec<Vec3> = balls
                 .iter()
                 .enumerate()
