@@ -31,6 +31,8 @@ pub enum Effect {
     TableSlope,
     /// Cue squirt.
     Squirt,
+    /// A cushion that gives way: rubber of finite travel on a damped backing.
+    CompliantCushion,
 }
 
 /// One parameter of an effect: the engine parameter it sets and its admissible range.
@@ -73,7 +75,7 @@ impl EffectParam {
 
 impl Effect {
     /// The whole catalogue.
-    pub const ALL: [Effect; 10] = [
+    pub const ALL: [Effect; 11] = [
         Effect::RollingResistance,
         Effect::SpeedDependentSliding,
         Effect::SidespinDecay,
@@ -84,6 +86,7 @@ impl Effect {
         Effect::NapDrift,
         Effect::TableSlope,
         Effect::Squirt,
+        Effect::CompliantCushion,
     ];
 
     /// The catalogue id (formats.md).
@@ -99,6 +102,7 @@ impl Effect {
             Effect::NapDrift => "nap_drift",
             Effect::TableSlope => "table_slope",
             Effect::Squirt => "squirt",
+            Effect::CompliantCushion => "compliant_cushion",
         }
     }
 
@@ -146,6 +150,11 @@ impl Effect {
                 "a strike off the centre line sends the ball off the cue's axis, away from the \
                  side struck (cue end mass cue_endmass)"
             }
+            Effect::CompliantCushion => {
+                "the cushion gives way: its rubber stores a hard impact's work up to M \
+                 cushion_bottom_speed^2 / 2 and gives back e_cushion^2 of it, the backing \
+                 behind takes the rest and gives back (1 - cushion_backing_damping v)^2"
+            }
         }
     }
 
@@ -162,6 +171,9 @@ impl Effect {
             Effect::NapDrift => "Williams 2002, cited in thesis §5.1.1.1",
             Effect::TableSlope => "a level bed is an assumption (thesis §2.4.2)",
             Effect::Squirt => "Shepard 1997, Cross 2008, thesis §2.4.1.3",
+            Effect::CompliantCushion => {
+                "thesis §5.1.2, §6.2.5; Hunt & Crossley 1975; Stronge 2000 §2.3"
+            }
         }
     }
 
@@ -178,6 +190,7 @@ impl Effect {
             Effect::NapDrift => &["nap_drift"],
             Effect::TableSlope => &["slope_x", "slope_y"],
             Effect::Squirt => &["cue_endmass"],
+            Effect::CompliantCushion => &["cushion_bottom_speed", "cushion_backing_damping"],
         }
     }
 
@@ -210,6 +223,10 @@ impl Effect {
                     .collect()
             }
             Effect::Squirt => one("cue_endmass", 0.0, 0.05, 1e-4),
+            Effect::CompliantCushion => vec![
+                EffectParam::new("cushion_bottom_speed", 0.1, 10.0, 1e-2),
+                EffectParam::new("cushion_backing_damping", 0.0, 2.0, 1e-3),
+            ],
         }
     }
 
@@ -221,6 +238,9 @@ impl Effect {
             Effect::SpeedDependentSliding => vec![vec![0.95 * model.params.mu_slide, 0.3]],
             Effect::BallRestitution => vec![vec![1.0]],
             Effect::TableSlope => vec![vec![0.0, 0.0]],
+            // The rubber's travel never used up is the rigid cushion; the data's own speeds
+            // decide where it bottoms out, so the fit starts from a few travels.
+            Effect::CompliantCushion => vec![vec![10.0, 0.05], vec![2.5, 0.05], vec![1.5, 0.1]],
             _ => vec![vec![0.0]],
         }
     }
@@ -240,11 +260,12 @@ impl Effect {
                 model.models.ball_ball == BallBallModel::Mathavan && p.mu_ball > 0.0
             }
             Effect::CushionFriction => {
-                model.models.cushion == CushionModel::Mathavan && p.mu_cushion > 0.0
+                model.models.cushion != CushionModel::Frictionless && p.mu_cushion > 0.0
             }
             Effect::NapDrift => p.nap_drift != 0.0,
             Effect::TableSlope => p.slope_x != 0.0 || p.slope_y != 0.0,
             Effect::Squirt => p.cue_endmass > 0.0,
+            Effect::CompliantCushion => model.models.cushion == CushionModel::Compliant,
         }
     }
 
@@ -266,6 +287,7 @@ impl Effect {
                 p.slope_y = 0.0;
             }
             Effect::Squirt => p.cue_endmass = 0.0,
+            Effect::CompliantCushion => m.models.cushion = CushionModel::Mathavan,
         }
         m
     }
@@ -281,7 +303,11 @@ impl Effect {
         // Friction in an impact needs the frictional model (thesis chapter 6).
         match self {
             Effect::BallFriction => m.models.ball_ball = BallBallModel::Mathavan,
-            Effect::CushionFriction => m.models.cushion = CushionModel::Mathavan,
+            // A compliant cushion is frictional already.
+            Effect::CushionFriction if m.models.cushion == CushionModel::Frictionless => {
+                m.models.cushion = CushionModel::Mathavan
+            }
+            Effect::CompliantCushion => m.models.cushion = CushionModel::Compliant,
             _ => {}
         }
         m

@@ -6,6 +6,7 @@
 //! trial-and-error fits of friction and restitution.
 
 pub mod catalogue;
+pub mod crossval;
 pub mod data;
 pub mod data_file;
 pub mod error;

@@ -6,7 +6,7 @@ use crate::catalogue::Effect;
 use crate::data::Measurement;
 use crate::fit::Fitted;
 use crate::residuals::Gap;
-use crate::workflow::{CandidateEffect, Findings, State};
+use crate::workflow::{CandidateEffect, Findings, State, Step};
 use serde_json::{Map, Value, json};
 
 fn params_of(f: &Fitted) -> (Value, Value) {
@@ -26,6 +26,7 @@ fn candidate(c: &CandidateEffect) -> Value {
         "delta_bic": if c.delta_bic.is_finite() { json!(c.delta_bic) } else { Value::Null },
         "share_of_excess": c.share,
         "verdict": c.verdict,
+        "refit": c.refit,
         "params": params,
         "uncertainties": uncertainties,
     })
@@ -65,36 +66,36 @@ pub fn catalogue() -> Value {
     )
 }
 
+/// One step (named, refitted or tentative) as JSON.
+fn step(s: &Step) -> Value {
+    let added = s
+        .fitted
+        .iter()
+        .find(|f| f.effect == s.effect)
+        .expect("a step's effect is among its fitted effects");
+    let (params, uncertainties) = params_of(added);
+    json!({
+        "effect": s.effect.id(),
+        "params": params,
+        "gap": s.gap,
+        "refit": s.refit,
+        "uncertainties": uncertainties,
+        "observable_gap": s.observable_gap,
+        "description": s.effect.description(),
+        "source": s.effect.source(),
+        "delta_bic": s.delta_bic,
+        "chi2": s.chi2,
+        "refitted": s.fitted.iter().map(|f| {
+            let (p, u) = params_of(f);
+            json!({"effect": f.effect.id(), "params": p, "uncertainties": u})
+        }).collect::<Vec<_>>(),
+        "candidates": s.candidates.iter().map(candidate).collect::<Vec<_>>(),
+    })
+}
+
 /// The report of `o` on `m` (formats.md's keys first).
 pub fn json(m: &Measurement, o: &Findings) -> Value {
-    let steps: Vec<Value> = o
-        .steps
-        .iter()
-        .map(|s| {
-            let added = s
-                .fitted
-                .iter()
-                .find(|f| f.effect == s.effect)
-                .expect("a step's effect is among its fitted effects");
-            let (params, uncertainties) = params_of(added);
-            json!({
-                "effect": s.effect.id(),
-                "params": params,
-                "gap": s.gap,
-                "uncertainties": uncertainties,
-                "observable_gap": s.observable_gap,
-                "description": s.effect.description(),
-                "source": s.effect.source(),
-                "delta_bic": s.delta_bic,
-                "chi2": s.chi2,
-                "refitted": s.fitted.iter().map(|f| {
-                    let (p, u) = params_of(f);
-                    json!({"effect": f.effect.id(), "params": p, "uncertainties": u})
-                }).collect::<Vec<_>>(),
-                "candidates": s.candidates.iter().map(candidate).collect::<Vec<_>>(),
-            })
-        })
-        .collect();
+    let steps: Vec<Value> = o.steps.iter().map(step).collect();
     let nuisances: Vec<Value> = m
         .shots
         .iter()
@@ -118,6 +119,7 @@ pub fn json(m: &Measurement, o: &Findings) -> Value {
         "final_observable_gap": o.final_state.observable_gap,
         "unexplained_where": o.unexplained_where,
         "ambiguous": o.ambiguous.iter().map(|e| e.id()).collect::<Vec<_>>(),
+        "tentative": o.tentative.iter().map(step).collect::<Vec<_>>(),
         "noise": m.noise,
         "shots": m.shots.iter().map(|s| json!({
             "name": s.name,
@@ -181,15 +183,17 @@ pub fn text(m: &Measurement, o: &Findings) -> String {
     if let Some(w) = &o.baseline_state.location.worst {
         out += &format!("  largest residual: {w}\n");
     }
-    for (k, s) in o.steps.iter().enumerate() {
+    let tentative = o.tentative.iter().map(|s| (s, "tentative, not named: "));
+    for (k, (s, label)) in o.steps.iter().map(|s| (s, "")).chain(tentative).enumerate() {
         let f = s
             .fitted
             .iter()
             .find(|f| f.effect == s.effect)
             .expect("a step's effect is among its fitted effects");
         out += &format!(
-            "step {}: named {} (BIC {:.0}): {}\n  {}\n",
+            "step {}: {label}{} {} (BIC {:.0}): {}\n  {}\n",
             k + 1,
+            if s.refit { "refitted" } else { "named" },
             s.effect.id(),
             s.delta_bic,
             format_fitted(f),

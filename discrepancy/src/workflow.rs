@@ -1,9 +1,22 @@
-//! The workflow: fit the data's unknown initial quantities under the current model, try every
-//! catalogue effect the model lacks, name the best one only if the data demand it, add it,
-//! and repeat until nothing significant is left; then say whether what remains is noise or
-//! something the catalogue cannot explain.
+//! The workflow: fit the data's unknown initial quantities under the current model, refit the
+//! effects the model already has, try every catalogue effect the model lacks, name the best
+//! one only if the data demand it, add it, and repeat until nothing significant is left; then
+//! say whether what remains is noise or something the catalogue cannot explain.
 //!
-//! An effect is named only if all of these hold:
+//! Effects the model already has are refitted before any new one is named (issue 25): an
+//! effect on with a wrong value (a ball friction the data want larger) is a refit, not a new
+//! law that mimics it. A refit is taken when it qualifies as below, whatever the new effects
+//! would score; only when no refit qualifies may a new effect be named.
+//!
+//! The names are a claim that the data are explained: they stand only if the named effects
+//! bring the residual down to the stated noise. When a significant residual remains (a law
+//! outside the catalogue's forms, say), the nearest catalogue laws are reported as tentative
+//! steps, nothing is named, and the residual is reported as unexplained where it sits.
+//!
+//! A step (refit or new effect) is taken only if the residual is significant (chi2 more than
+//! [`Options::significance`] standard deviations above its expectation: otherwise there is
+//! nothing to explain, and an effect that still lowers the BIC is fitting the noise) and all
+//! of these hold:
 //! - its fit lowers the Bayesian information criterion (chi2 + k ln n, known noise; Schwarz
 //!   1978) by at least [`Options::threshold`] (10: "very strong" evidence, Kass & Raftery 1995);
 //! - it explains at least [`Options::min_share`] of the excess chi2 (chi2 above its expected
@@ -65,6 +78,8 @@ pub struct CandidateEffect {
     pub share: f64,
     /// What the workflow made of it.
     pub verdict: EffectVerdict,
+    /// True for an effect the model already had, refitted; false for a new one.
+    pub refit: bool,
 }
 
 /// What the workflow made of a candidate effect in one step.
@@ -80,6 +95,12 @@ pub enum EffectVerdict {
     ExplainsTooLittle,
     /// It explains the data as well as the best one: the data cannot tell them apart.
     Indistinguishable,
+    /// The residual is already consistent with the stated noise: nothing is left for the
+    /// effect to explain, however much it would lower the BIC.
+    NotNeeded,
+    /// A fitted value sits at the edge of its admissible range: the fit wants a value the
+    /// law does not allow (or the effect off), so it is not the law the data follow.
+    AtLimit,
     /// It has no admissible value in this model.
     NotApplicable,
     /// Its fit failed.
@@ -104,6 +125,8 @@ impl std::fmt::Display for EffectVerdict {
             EffectVerdict::NotSignificant => f.write_str("not significant"),
             EffectVerdict::ExplainsTooLittle => f.write_str("explains too little"),
             EffectVerdict::Indistinguishable => f.write_str("indistinguishable"),
+            EffectVerdict::AtLimit => f.write_str("at the edge of its range"),
+            EffectVerdict::NotNeeded => f.write_str("not needed: the residual is noise"),
             EffectVerdict::NotApplicable => write!(f, "{}", DiscrepancyError::NotApplicable),
             EffectVerdict::Failed(e) => write!(f, "failed: {e}"),
         }
@@ -122,8 +145,10 @@ impl Serialize for EffectVerdict {
 pub struct Step {
     /// The effect named, with every named effect's values as refitted at this step.
     pub fitted: Vec<Fitted>,
-    /// The effect this step added.
+    /// The effect this step added (or refitted).
     pub effect: Effect,
+    /// True when the step refitted an effect the starting model already had.
+    pub refit: bool,
     /// Position gap after the step.
     pub gap: Gap,
     /// Gap of the observables after the step (their own units).
@@ -165,8 +190,11 @@ pub struct Findings {
     pub baseline: FitResult,
     /// Its summary.
     pub baseline_state: State,
-    /// Named effects, in order.
+    /// Named effects, in order (empty when the residual stays significant: see `tentative`).
     pub steps: Vec<Step>,
+    /// The steps taken towards a residual that stayed significant: the nearest catalogue
+    /// laws, not named.
+    pub tentative: Vec<Step>,
     /// The candidates of the last, unsuccessful step (why nothing more was named).
     pub last_candidates: Vec<CandidateEffect>,
     /// The final fit.
@@ -182,7 +210,7 @@ pub struct Findings {
 }
 
 impl Findings {
-    /// The effects named, in order.
+    /// The effects named or refitted, in order.
     pub fn named(&self) -> Vec<Effect> {
         self.steps.iter().map(|s| s.effect).collect()
     }
@@ -202,7 +230,9 @@ fn observable_gap(m: &Measurement, sims: &[snooker_engine::Shot]) -> Gap {
     }
 }
 
-fn mean_relative_error(m: &Measurement, r: &FitResult) -> f64 {
+/// Mean |simulated - measured| / |measured| over the observables of `m` under the fit `r`
+/// (0 without observables).
+pub fn mean_relative_error(m: &Measurement, r: &FitResult) -> f64 {
     let rows = crate::locate::observable_rows(m, &r.sims);
     let errs: Vec<f64> = rows
         .iter()
@@ -229,28 +259,44 @@ fn state(m: &Measurement, r: &FitResult) -> State {
     }
 }
 
+/// True when a fitted value lies at an end of its admissible range (within a millionth of
+/// the range).
+fn at_limit(f: &Fitted) -> bool {
+    f.params.iter().zip(&f.values).any(|(p, v)| {
+        let edge = 1e-6 * (p.high - p.low);
+        *v <= p.low + edge || *v >= p.high - edge
+    })
+}
+
 /// chi2 above what noise alone would give, and its threshold of significance.
 fn excess(r: &FitResult, opts: &Options) -> (f64, f64) {
     let dof = r.n.saturating_sub(r.k).max(1) as f64;
     (r.chi2 - dof, opts.significance * (2.0 * dof).sqrt())
 }
 
-/// Fits `effect` on top of the named effects, from each of its starting points; the best.
+/// Fits `effect` on top of the named effects, from each of its starting points (a refit:
+/// from its current values); the best.
 fn try_effect(
     m: &Measurement,
     named: &[(Effect, Vec<f64>)],
     current: &FitResult,
     effect: Effect,
+    refit: bool,
 ) -> Result<FitResult, DiscrepancyError> {
     if effect.params(&current.model).is_empty() {
         return Err(DiscrepancyError::NotApplicable);
     }
+    let starts = if refit {
+        vec![effect.values(&current.model)]
+    } else {
+        effect.starts(&current.model)
+    };
     let mut best: Option<FitResult> = None;
     let mut last_err = None;
     // The initial quantities from the current fit, and afresh from the data: the current ones
     // may have bent to make up for the very effect being tried.
     let fresh: Vec<_> = m.shots.iter().map(starting_values).collect();
-    for start in effect.starts(&current.model) {
+    for start in starts {
         for nuisances in [&current.nuisances, &fresh] {
             let mut list = named.to_vec();
             list.push((effect, start.clone()));
@@ -278,23 +324,31 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
     let mut ambiguous = Vec::new();
     let mut stop_reason = None;
     while steps.len() < opts.max_steps {
-        let tried: Vec<Effect> = opts
+        let is_named = |e: &Effect| named.iter().any(|(n, _)| n == e);
+        // New effects (off in the model), then the starting model's own effects to refit.
+        let tried: Vec<(Effect, bool)> = opts
             .candidates
             .iter()
-            .copied()
-            .filter(|e| !e.is_on(&current.model) && !named.iter().any(|(n, _)| n == e))
+            .filter(|e| !e.is_on(&current.model) && !is_named(e))
+            .map(|&e| (e, false))
+            .chain(
+                opts.candidates
+                    .iter()
+                    .filter(|e| e.is_on(&m.model) && !is_named(e))
+                    .map(|&e| (e, true)),
+            )
             .collect();
         if tried.is_empty() {
             break;
         }
-        let fits: Vec<(Effect, Result<FitResult, DiscrepancyError>)> = tried
+        let fits: Vec<(Effect, bool, Result<FitResult, DiscrepancyError>)> = tried
             .par_iter()
-            .map(|&e| (e, try_effect(m, &named, &current, e)))
+            .map(|&(e, refit)| (e, refit, try_effect(m, &named, &current, e, refit)))
             .collect();
-        let (excess_now, _) = excess(&current, opts);
+        let (excess_now, limit) = excess(&current, opts);
         let mut cands: Vec<(CandidateEffect, Option<FitResult>)> = fits
             .into_iter()
-            .map(|(effect, r)| match r {
+            .map(|(effect, refit, r)| match r {
                 Ok(r) => {
                     let delta_bic = r.bic() - current.bic();
                     // With no excess left there is nothing to explain.
@@ -311,6 +365,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                             delta_bic,
                             share,
                             verdict: EffectVerdict::Qualified,
+                            refit,
                         },
                         Some(r),
                     )
@@ -322,6 +377,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                         delta_bic: f64::INFINITY,
                         share: 0.0,
                         verdict: EffectVerdict::of_error(e),
+                        refit,
                     },
                     None,
                 ),
@@ -330,6 +386,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         cands.sort_by(|a, b| {
             a.0.delta_bic
                 .total_cmp(&b.0.delta_bic)
+                .then(a.0.refit.cmp(&b.0.refit))
                 .then(a.0.effect.cmp(&b.0.effect))
         });
         for (c, _) in cands
@@ -340,11 +397,32 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
                 EffectVerdict::NotSignificant
             } else if c.share < opts.min_share {
                 EffectVerdict::ExplainsTooLittle
+            } else if c.fitted.as_ref().is_some_and(at_limit) {
+                EffectVerdict::AtLimit
+            } else if excess_now <= limit {
+                EffectVerdict::NotNeeded
             } else {
                 EffectVerdict::Qualified
             };
         }
-        // The best-scoring effect is the only one that may be named.
+        // Parsimony: a qualified refit scoring within `distinct` of the best new law comes
+        // first (the data cannot tell them apart, and the refit adds no law).
+        if let Some((best, _)) = cands.first()
+            && !best.refit
+            && best.verdict == EffectVerdict::Qualified
+        {
+            let best_bic = best.delta_bic;
+            if let Some(j) = cands.iter().position(|(c, _)| {
+                c.refit
+                    && c.verdict == EffectVerdict::Qualified
+                    && c.delta_bic - best_bic < opts.distinct
+            }) {
+                let promoted = cands.remove(j);
+                cands.insert(0, promoted);
+            }
+        }
+        // A refit in front competes with the other refits only.
+        let refit_first = cands.first().is_some_and(|(c, _)| c.refit);
         if cands
             .first()
             .is_none_or(|(c, _)| c.verdict != EffectVerdict::Qualified)
@@ -367,12 +445,13 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         let lead = cands
             .iter()
             .enumerate()
-            .filter(|(j, (c, _))| *j != i && c.fitted.is_some())
+            .filter(|(j, (c, _))| *j != i && c.fitted.is_some() && (!refit_first || c.refit))
             .map(|(_, (c, _))| c.delta_bic - cands[i].0.delta_bic)
             .fold(f64::INFINITY, f64::min);
         if lead < opts.distinct {
             ambiguous = cands
                 .iter()
+                .filter(|(c, _)| !refit_first || c.refit)
                 .filter(|(c, _)| c.delta_bic - cands[i].0.delta_bic < opts.distinct)
                 .map(|(c, _)| c.effect)
                 .collect();
@@ -409,6 +488,7 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         steps.push(Step {
             fitted: r.effects.clone(),
             effect: cand.effect,
+            refit: cand.refit,
             gap: position_gap(m, &r.sims),
             observable_gap: observable_gap(m, &r.sims),
             chi2: r.chi2,
@@ -417,9 +497,27 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
         });
         current = r;
     }
-    let final_state = state(m, &current);
     let (left, limit) = excess(&current, opts);
     let unexplained = left > limit || !ambiguous.is_empty();
+    // Names stand only if they explain the data down to the noise: otherwise the steps are
+    // the nearest laws to something outside the catalogue, and none of them is a finding.
+    let mut tentative = Vec::new();
+    let mut nearest = None;
+    if unexplained && !steps.is_empty() {
+        let path = steps
+            .iter()
+            .map(|s: &Step| s.effect.id())
+            .collect::<Vec<_>>()
+            .join(", then ");
+        nearest = Some(format!(
+            "the nearest catalogue laws ({path}) leave chi2/dof {:.2}, not the noise, so \
+             none is named",
+            current.reduced_chi2()
+        ));
+        tentative = std::mem::take(&mut steps);
+        current = baseline.clone();
+    }
+    let final_state = state(m, &current);
     let unexplained_where = unexplained.then(|| {
         let place = final_state
             .location
@@ -427,15 +525,19 @@ pub fn run(m: &Measurement, opts: &Options) -> Result<Findings, DiscrepancyError
             .clone()
             .or_else(|| worst_observable(&final_state.location))
             .unwrap_or_default();
-        match stop_reason {
-            Some(r) => format!("{r}; largest residual: {place}"),
-            None => format!("no catalogue effect explains it; largest residual: {place}"),
-        }
+        let why = match (stop_reason, nearest) {
+            (Some(r), Some(n)) => format!("{r}; {n}"),
+            (Some(r), None) => r,
+            (None, Some(n)) => format!("no catalogue effect explains it: {n}"),
+            (None, None) => "no catalogue effect explains it".into(),
+        };
+        format!("{why}; largest residual: {place}")
     });
     Ok(Findings {
         baseline,
         baseline_state,
         steps,
+        tentative,
         last_candidates,
         last: current,
         final_state,

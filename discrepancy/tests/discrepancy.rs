@@ -98,6 +98,17 @@ fn cushions() -> ShotData {
     )
 }
 
+/// A ball rolling square across the table at `v` m/s into the top cushion, and back and forth
+/// between the long cushions: hard rebounds, then softer ones.
+fn rebound(v: f64) -> ShotData {
+    let r = Params::default().ball_radius;
+    shot(
+        &format!("rebound-{v}"),
+        vec![moving(ball("cue", 1.0, 1.2), [0.0, v], [-v / r, 0.0, 0.0])],
+        vec![Nuisance::Vel(0), Nuisance::Spin(0)],
+    )
+}
+
 /// A strike with side: the ball leaves off the cue's axis by squirt.
 fn side_strike() -> ShotData {
     let mut s = shot(
@@ -230,6 +241,7 @@ fn case(effect: Effect) -> Case {
         Effect::NapDrift => (vec![0.02], || vec![round_the_table()]),
         Effect::TableSlope => (vec![0.001, -0.0006], || vec![round_the_table()]),
         Effect::Squirt => (vec![0.0069], || vec![side_strike()]),
+        Effect::CompliantCushion => (vec![1.853, 0.0692], || vec![rebound(2.5), rebound(3.5)]),
     };
     Case {
         effect,
@@ -323,6 +335,11 @@ fn squirt_is_found() {
 }
 
 #[test]
+fn compliant_cushion_is_found() {
+    finds(Effect::CompliantCushion);
+}
+
+#[test]
 fn nothing_hidden_names_nothing() {
     // The thesis's model throughout: the data hold nothing the model lacks.
     let m = measure(
@@ -406,6 +423,101 @@ fn seed_sweep() {
             }
         }
     }
-    eprintln!("seed sweep: {} of 50 pass", 50 - failed.len());
+    let runs = 5 * Effect::ALL.len();
+    eprintln!("seed sweep: {} of {runs} pass", runs - failed.len());
     assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
+
+/// A law outside the catalogue's forms hidden in `shots` (the thesis's model otherwise): the
+/// workflow names nothing, or only effects in `allowed` (the catalogue's own form of the
+/// law, refitted), and a residual left significant is reported unexplained. Never a wrong
+/// effect named (issue 25).
+fn outside_the_catalogue(law: Uncatalogued, shots: Vec<ShotData>, allowed: &[Effect], seed: u64) {
+    let hidden = Hidden {
+        effects: Vec::new(),
+        uncatalogued: vec![law],
+    };
+    let m = measure(shots, default_model(), &hidden, seed);
+    let o = run(&m, &Options::default()).unwrap();
+    let text = report(&o);
+    eprintln!(
+        "{law:?}\n{text}\ntentative: {:?}",
+        o.tentative
+            .iter()
+            .map(|s| s.effect.id())
+            .collect::<Vec<_>>()
+    );
+    for e in o.named() {
+        assert!(allowed.contains(&e), "{law:?}: named {}\n{text}", e.id());
+    }
+    // The law is large enough to be seen: either it is explained to the noise by the
+    // allowed effects, or it is reported.
+    assert!(
+        o.unexplained || o.final_state.gap.rms <= 1.5 * NOISE,
+        "{text}"
+    );
+    if o.named().is_empty() {
+        assert!(
+            o.unexplained,
+            "{law:?}: nothing named, nothing reported\n{text}"
+        );
+    }
+}
+
+#[test]
+fn rolling_resistance_different_along_x_and_y_names_nothing_wrong() {
+    // The issue's first example: once "explained" by a table slope and nap drift.
+    outside_the_catalogue(
+        Uncatalogued::AnisotropicRolling { mu_roll_y: 0.0160 },
+        vec![round_the_table()],
+        &[Effect::RollingResistance],
+        21,
+    );
+}
+
+#[test]
+fn strongly_anisotropic_rolling_resistance_names_nothing_wrong() {
+    // Twice the resistance across the table as along it: no one mu_roll fits both.
+    outside_the_catalogue(
+        Uncatalogued::AnisotropicRolling { mu_roll_y: 0.0256 },
+        vec![round_the_table()],
+        &[Effect::RollingResistance],
+        25,
+    );
+}
+
+#[test]
+fn throw_falling_with_speed_names_nothing_wrong() {
+    // The issue's second example: once "explained" by a 3e-5 table slope. One impact's throw
+    // is one friction: its refit is the law's own form.
+    outside_the_catalogue(
+        Uncatalogued::ThrowFallingWithSpeed { mu_slow: 0.12 },
+        vec![cut()],
+        &[Effect::BallFriction],
+        22,
+    );
+}
+
+#[test]
+fn rolling_resistance_rising_with_speed_names_nothing_wrong() {
+    outside_the_catalogue(
+        Uncatalogued::RollingRisingWithSpeed { speed: 1.0 },
+        vec![round_the_table()],
+        &[Effect::RollingResistance],
+        23,
+    );
+}
+
+#[test]
+fn cushion_restitution_depending_on_the_angle_names_nothing_wrong() {
+    outside_the_catalogue(
+        Uncatalogued::CushionAngleRestitution { drop: 0.2 },
+        vec![cushions()],
+        &[
+            Effect::CushionFriction,
+            Effect::CushionSpeedRestitution,
+            Effect::CompliantCushion,
+        ],
+        24,
+    );
 }

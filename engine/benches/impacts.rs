@@ -4,7 +4,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use snooker_engine::impact::ball_ball::mathavan as bb;
-use snooker_engine::impact::cushion::mathavan as cush;
+use snooker_engine::impact::cushion::{compliant, mathavan as cush};
 use snooker_engine::impact::incoming;
 use snooker_engine::{Params, Vec3};
 use std::hint::black_box;
@@ -19,6 +19,14 @@ fn impacts(c: &mut Criterion) {
     let ball = incoming::typical_cushion(&p);
     c.bench_function("cushion mathavan (1 m/s, 45 deg, rolling)", |b| {
         b.iter(|| cush::resolve(black_box(&ball), Vec3::y(), &p).unwrap())
+    });
+    // A hard impact, beyond the compliant cushion's travel: rolling square on at 3 m/s.
+    let hard = incoming::cushion(3.0, std::f64::consts::FRAC_PI_2, 1.0, 0.0, &p);
+    c.bench_function("cushion mathavan (3 m/s, square on, rolling)", |b| {
+        b.iter(|| cush::resolve(black_box(&hard), Vec3::y(), &p).unwrap())
+    });
+    c.bench_function("cushion compliant (3 m/s, square on, rolling)", |b| {
+        b.iter(|| compliant::resolve(black_box(&hard), Vec3::y(), &p).unwrap())
     });
 }
 

@@ -4,8 +4,10 @@
 //! ball-ball or the cushion model. Prints the distribution, and the five worst impacts with
 //! the converged solution's own sensitivity (its change, per 1e-9, when the approach speed
 //! changes by one part in 1e9: an error far above that is the solver's, not the problem's).
+//! `compliant` runs the cushion impacts against the compliant cushion (default backing; the
+//! impacts faster than its travel, 1.853 m/s, meet the backing).
 //!
-//! `cargo run --release -p snooker-engine --example impact_sweep -- bb|cushion N [TOL...]`
+//! `cargo run --release -p snooker-engine --example impact_sweep -- bb|cushion|compliant N [TOL...]`
 use snooker_engine::Params;
 use snooker_engine::impact::impulse::TOLERANCE;
 use snooker_engine::impact::sweep::{self, CONVERGED, Rng, convergence, difference, random_impact};
@@ -13,13 +15,16 @@ use std::io::Write;
 
 fn main() -> std::io::Result<()> {
     let usage = || -> ! {
-        eprintln!("usage: impact_sweep bb|cushion [N (default 20000)] [TOL...] (TOL > 0)");
+        eprintln!(
+            "usage: impact_sweep bb|cushion|compliant [N (default 20000)] [TOL...] (TOL > 0)"
+        );
         std::process::exit(2);
     };
     let mut args = std::env::args().skip(1);
-    let cushion = match args.next().as_deref() {
-        Some("bb") => false,
-        Some("cushion") => true,
+    let (cushion, compliant) = match args.next().as_deref() {
+        Some("bb") => (false, false),
+        Some("cushion") => (true, false),
+        Some("compliant") => (true, true),
         _ => usage(),
     };
     let n: usize = match args.next() {
@@ -48,7 +53,15 @@ fn main() -> std::io::Result<()> {
     let p = Params::default();
     let (r, mass) = (p.ball_radius, p.ball_mass);
     let mut rng = Rng(sweep::SEED);
-    let impacts: Vec<_> = (0..n).map(|_| random_impact(&mut rng, cushion)).collect();
+    let impacts: Vec<_> = (0..n)
+        .map(|_| {
+            let mut i = random_impact(&mut rng, cushion);
+            if compliant {
+                i.contact.backing = Some(p.cushion_backing());
+            }
+            i
+        })
+        .collect();
     let mut out = std::io::stdout().lock();
     for tol in tols {
         let mut errors: Vec<(f64, usize)> = Vec::with_capacity(n);

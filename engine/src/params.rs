@@ -260,6 +260,17 @@ declare_params! {
     /// was fitted below 1.5 m/s).
     e_cushion_knee: unit "m/s", default 1.5, range ValidRange::closed(0.0, 30.0),
         source "thesis §6.2.5.1 (e_e fitted below 1.5 m/s)";
+    /// The compliant cushion's rubber travel ([`crate::impact::cushion::compliant`]), as the
+    /// speed at which a ball carries the energy the rubber stores when its travel is used up:
+    /// E_b = M v_b^2 / 2, m/s. Below it the compliant cushion is the rigid one (thesis §6.2,
+    /// e_e); above it the ball meets the backing. Used only by `cushion = "compliant"`.
+    cushion_bottom_speed: unit "m/s", default 1.853, range ValidRange::closed(0.0, 30.0),
+        source "fitted to the thesis's 31 rebounds (§5.1.2, fig. 5.7; docs/discrepancy.md)";
+    /// The compliant cushion's backing: Hunt and Crossley's damping alpha, s/m; it gives back
+    /// (1 - alpha v)^2 of the energy it takes from a ball meeting it at v. Used only by
+    /// `cushion = "compliant"`.
+    cushion_backing_damping: unit "s/m", default 0.0692, range ValidRange::closed(0.0, 10.0),
+        source "Hunt and Crossley 1975; fitted to the thesis's 31 rebounds (§5.1.2)";
 }
 
 /// The tip end mass that gives a squirt angle `angle` at side offset `b`
@@ -347,6 +358,15 @@ impl Params {
         let s = self.cushion_sin_theta();
         let tan = s / (1.0 - s * s).sqrt();
         self.mu_cushion * tan + self.mu_slide.max(self.mu_slide_low) * (tan + self.mu_cushion)
+    }
+
+    /// The compliant cushion's backing behind its rubber (thesis §6.2.5: the rigid model holds
+    /// below about 2.5 m/s, the cushion deforming above).
+    pub fn cushion_backing(&self) -> crate::impact::impulse::Backing {
+        crate::impact::impulse::Backing {
+            bottom_energy: 0.5 * self.ball_mass * self.cushion_bottom_speed.powi(2),
+            damping: self.cushion_backing_damping,
+        }
     }
 
     /// The cushion's restitution for an impact at normal speed `v`, m/s.

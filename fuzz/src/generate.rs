@@ -362,7 +362,7 @@ impl Gen<'_> {
     }
 
     /// Parameters anywhere in their ranges (a few at a time), keeping the conditions between
-    /// them; sometimes the frictionless impact models.
+    /// them; sometimes other impact models (frictionless, and the compliant cushion).
     fn parameters(&mut self) {
         let mut p = Params::default();
         let mut set: Vec<(&'static str, f64)> = Vec::new();
@@ -428,7 +428,13 @@ impl Gen<'_> {
                     "mathavan"
                 }
             };
-            let models = (pick(self), pick(self));
+            // The cushion also as the compliant one (issue 25).
+            let cushion = match self.rng.random_range(0..3) {
+                0 => "frictionless",
+                1 => "mathavan",
+                _ => "compliant",
+            };
+            let models = (pick(self), cushion);
             self.scene.models = Some(models);
         }
     }

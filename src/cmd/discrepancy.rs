@@ -25,6 +25,12 @@ pub struct Args {
     /// Write the JSON report to this file.
     #[arg(long, value_name = "OUT")]
     json: Option<PathBuf>,
+    /// Instead of the workflow: cross-validate on the shots whose names start with PREFIX
+    /// (the other shots always train): the thesis's model, the start model, the rigid model
+    /// with e_ball and mu_ball fitted, and the workflow, each fitted on one half and tested
+    /// on the other. With --report, writes cross-validation.md and .json there.
+    #[arg(long, value_name = "PREFIX")]
+    cross_validate: Option<String>,
     /// Print nothing but errors.
     #[arg(long, short)]
     quiet: bool,
@@ -46,6 +52,9 @@ pub fn run(args: Args) -> ExitCode {
         if let Err(e) = check_output_dir(d, "report.json") {
             return bad_input(format!("--report {}: {e}", d.display()));
         }
+    }
+    if let Some(prefix) = &args.cross_validate {
+        return cross_validation(&args, &m, prefix);
     }
     let findings = match dsc::run(&m, &dsc::Options::default()) {
         Ok(o) => o,
@@ -179,4 +188,98 @@ fn write_overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<V
         written.push(p);
     }
     Ok(written)
+}
+
+/// `--cross-validate PREFIX`: the fidelity table of train and test errors.
+fn cross_validation(args: &Args, m: &Measurement, prefix: &str) -> ExitCode {
+    use dsc::crossval::{Fitting, cross_validate};
+    use snooker_engine::{Models, Params};
+    let pool: Vec<usize> = (0..m.shots.len())
+        .filter(|&i| m.shots[i].name.starts_with(prefix))
+        .collect();
+    if pool.len() < 2 {
+        return bad_input(format!(
+            "--cross-validate {prefix}: {} shot(s) of {} start with it; two at least are needed",
+            pool.len(),
+            args.data.display()
+        ));
+    }
+    let thesis = dsc::Model {
+        params: Params::default(),
+        models: Models::default(),
+    };
+    let fittings = [
+        (
+            "thesis model (e_ball 0.89, mu_ball 0.05)",
+            Fitting::Fixed(thesis),
+        ),
+        ("start model", Fitting::Fixed(m.model)),
+        (
+            "rigid model, e_ball and mu_ball fitted",
+            Fitting::Effects(
+                thesis,
+                vec![dsc::Effect::BallRestitution, dsc::Effect::BallFriction],
+            ),
+        ),
+        (
+            "the workflow from the start model",
+            Fitting::Workflow(m.model),
+        ),
+    ];
+    let mut rows = Vec::new();
+    for (name, f) in &fittings {
+        match cross_validate(m, &pool, name, f) {
+            Ok(r) => rows.push(r),
+            Err(e) => return failed(format!("{}: {name}: {e}", args.data.display())),
+        }
+    }
+    let mut md =
+        String::from("| model | fitted on | train error | test error |\n|---|---|---|---|\n");
+    for r in &rows {
+        let fitted: Vec<String> = r
+            .folds
+            .iter()
+            .map(|f| {
+                let vals: Vec<String> = f
+                    .fitted
+                    .iter()
+                    .flat_map(|x| {
+                        x.params
+                            .iter()
+                            .zip(&x.values)
+                            .map(|(p, v)| format!("{} {v:.3}", p.name))
+                    })
+                    .collect();
+                if vals.is_empty() {
+                    "-".to_string()
+                } else {
+                    format!("{}: {}", f.train.join("+"), vals.join(", "))
+                }
+            })
+            .collect();
+        md += &format!(
+            "| {} | {} | {:.2} % | {:.2} % |\n",
+            r.name,
+            fitted.join("; "),
+            100.0 * r.train_error,
+            100.0 * r.test_error
+        );
+    }
+    if !args.quiet {
+        out!("{md}");
+    }
+    if let Some(dir) = &args.report {
+        let json = serde_json::to_string_pretty(&rows).map(|t| t + "\n");
+        let res = std::fs::create_dir_all(dir)
+            .map_err(anyhow::Error::from)
+            .and_then(|_| write_atomic(&dir.join("cross-validation.md"), md.as_bytes()))
+            .and_then(|_| {
+                let text = json.map_err(anyhow::Error::from)?;
+                write_atomic(&dir.join("cross-validation.json"), text.as_bytes())
+            });
+        if let Err(e) = res {
+            return bad_input(format!("{e:#}"));
+        }
+    }
+    ExitCode::SUCCESS
 }

@@ -17,7 +17,9 @@ pub struct Args {
     /// The scene the shot starts from (its model is the one without the hidden effects).
     scene: PathBuf,
     /// Hide an effect: a catalogue id with its value(s), e.g. table_slope=0.001,-0.0005,
-    /// or one outside the catalogue (wobble=AMPLITUDE_M). Repeatable.
+    /// or a law outside the catalogue's forms: wobble=AMPLITUDE_M, anisotropic_rolling=MU_Y,
+    /// throw_falling_with_speed=MU_SLOW, rolling_rising_with_speed=SPEED,
+    /// cushion_angle_restitution=DROP. Repeatable.
     #[arg(long = "effect", value_name = "NAME=VALUE[,VALUE]")]
     effects: Vec<String>,
     /// Override a parameter of the truth model, NAME=VALUE (repeatable).
@@ -113,11 +115,11 @@ fn hidden(effects: &[String], base: &Model) -> anyhow::Result<Hidden> {
                 }
             }
             h.effects.push((e, values));
-        } else if let Some(u) = Uncatalogued::from_name(name, values[0]) {
-            if values.len() != 1 || !(values[0] >= 0.0 && values[0] < 0.05) {
-                bail!("--effect {spec}: {name} takes one amplitude in [0, 0.05) m");
+        } else if let Some(u) = Uncatalogued::from_name(name, &values) {
+            match u {
+                Ok(u) => h.uncatalogued.push(u),
+                Err(why) => bail!("--effect {spec}: {why}"),
             }
-            h.uncatalogued.push(u);
         } else {
             bail!(
                 "--effect {spec}: unknown effect `{name}` (catalogue: {}; outside it: {})",
@@ -168,7 +170,7 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
             );
         }
     }
-    let (sim, samples) = film(&shot, &truth, &hidden.uncatalogued, camera)
+    let (duration, samples) = film(&shot, &truth, &hidden.uncatalogued, camera)
         .map_err(|e| anyhow::anyhow!("{}: {e}", req.scene.display()))?;
     shot.samples = samples;
     let out = &req.out;
@@ -202,8 +204,9 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
                     .join(",")
             )
         })
-        .chain(hidden.uncatalogued.iter().map(|u| match u {
-            Uncatalogued::Wobble { amplitude } => format!("wobble={amplitude}"),
+        .chain(hidden.uncatalogued.iter().map(|u| {
+            let (name, value) = u.name_value();
+            format!("{name}={value}")
         }))
         .chain(req.params.iter().cloned())
         .collect();
@@ -245,7 +248,7 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
         shot.samples.len(),
         ids.len(),
         shot.last_sample(),
-        sim.duration,
+        duration,
         out.display(),
         dir.join(&tracks_name).display(),
         dir.join(&scene_name).display()

@@ -243,7 +243,10 @@ pub fn world_config(models: ImpactModels, dt: f64) -> WorldConfig {
     } else {
         ImpactFriction::Off
     };
-    WorldConfig::new(dt, friction)
+    WorldConfig {
+        compliant_cushion: models.compliant_cushion(),
+        ..WorldConfig::new(dt, friction)
+    }
 }
 
 /// `spec`'s setup with `models`, or why the run cannot be made.
@@ -386,13 +389,17 @@ fn ensemble_statistics(
     summarise(&members, &stats(&setup, rapier))
 }
 
-/// The runs of a scene: the frictionless limit, and with friction when the scene has impacts.
+/// The runs of a scene: the frictionless limit, and with friction when the scene has impacts;
+/// the cushion scenes also with the compliant cushion.
 pub fn check_scene(spec: &SceneSpec, dt: f64) -> Vec<RunReport> {
     let first = check(spec, ImpactModels::Frictionless, dt);
     let has_impacts = first.compared().is_some_and(|c| !c.whole.ours.is_empty());
     let mut out = vec![first];
     if has_impacts {
         out.push(check(spec, ImpactModels::Mathavan, dt));
+        if spec.name.starts_with("cushion") {
+            out.push(check(spec, ImpactModels::Compliant, dt));
+        }
     }
     out
 }

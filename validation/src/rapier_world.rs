@@ -118,6 +118,9 @@ pub struct WorldConfig {
     pub dt: f64,
     /// Friction during impacts.
     pub impact_friction: ImpactFriction,
+    /// The cushions' restitution is the compliant cushion's for each impact's normal speed
+    /// (`snooker_engine::impact::impulse::Backing::restitution`), not e_e.
+    pub compliant_cushion: bool,
     /// Natural frequency of the soft contacts, Hz (rapier's default: 30 between bodies, 60
     /// against fixed bodies).
     pub contact_hz: f64,
@@ -137,6 +140,7 @@ impl WorldConfig {
         WorldConfig {
             dt,
             impact_friction,
+            compliant_cushion: false,
             cushion_contact: match impact_friction {
                 ImpactFriction::On => ContactHeight::Nose,
                 ImpactFriction::Off => ContactHeight::Level,
@@ -152,13 +156,16 @@ impl WorldConfig {
 struct ContactRules {
     params: Params,
     impact_friction: ImpactFriction,
+    /// The compliant cushion's restitution ([`WorldConfig::compliant_cushion`]).
+    compliant_cushion: bool,
     /// Per ball: the cloth's friction is off during this step (a frictionless cushion impact).
     cloth_friction_off: Vec<bool>,
 }
 
 impl ContactRules {
-    /// (friction, restitution) for a pair of bodies.
-    fn coefficients(&self, a: TablePart, b: TablePart) -> (f64, f64) {
+    /// (friction, restitution) for a pair of bodies, the ball's contact approaching the other
+    /// at `approach` (m/s, in plan).
+    fn coefficients(&self, a: TablePart, b: TablePart, approach: f64) -> (f64, f64) {
         let p = &self.params;
         let on = self.impact_friction == ImpactFriction::On;
         let (ball, other) = match (a, b) {
@@ -170,7 +177,13 @@ impl ContactRules {
             TablePart::Ball(_) => (if on { p.mu_ball } else { 0.0 }, p.e_ball),
             // Thesis §6.2: mu_w, e_e at the nose.
             TablePart::Cushion(_) | TablePart::Jaw(_) => {
-                (if on { p.mu_cushion } else { 0.0 }, p.e_cushion)
+                let e = if self.compliant_cushion {
+                    p.cushion_backing()
+                        .restitution(p.e_cushion, p.ball_mass, approach)
+                } else {
+                    p.e_cushion
+                };
+                (if on { p.mu_cushion } else { 0.0 }, e)
             }
             // Thesis §2.4.2: sliding friction mu_s; the cloth does not bounce.
             TablePart::Cloth => (
@@ -190,7 +203,26 @@ impl PhysicsHooks for ContactRules {
     fn modify_solver_contacts(&self, ctx: &mut ContactModificationContext) {
         let a = TablePart::decode(ctx.colliders[ctx.collider1].user_data);
         let b = TablePart::decode(ctx.colliders[ctx.collider2].user_data);
-        let (friction, restitution) = self.coefficients(a, b);
+        // The ball's speed in plan along the contact normal (only the compliant cushion's
+        // restitution depends on it).
+        let approach = if self.compliant_cushion {
+            let ball_body = match a {
+                TablePart::Ball(_) => ctx.rigid_body1,
+                _ => ctx.rigid_body2,
+            };
+            let normal = ctx.rigid_mut().map(|m| *m.normal);
+            let n = normal.map_or(Vec3::zeros(), |v| Vec3::new(v.x, v.y, 0.0));
+            match ball_body.and_then(|h| ctx.bodies.get(h)) {
+                Some(body) if n.norm() > 0.0 => {
+                    let v = body.linvel();
+                    Vec3::new(v.x, v.y, 0.0).dot(&n).abs() / n.norm()
+                }
+                _ => 0.0,
+            }
+        } else {
+            0.0
+        };
+        let (friction, restitution) = self.coefficients(a, b, approach);
         if let Some(m) = ctx.rigid_mut() {
             *m.friction = friction;
             *m.restitution = restitution;
@@ -327,6 +359,7 @@ impl World {
             rules: ContactRules {
                 params: *params,
                 impact_friction: cfg.impact_friction,
+                compliant_cushion: cfg.compliant_cushion,
                 cloth_friction_off: vec![false; balls.len()],
             },
             balls: slots,

@@ -27,6 +27,8 @@ pub const BUILTIN: &[(&str, &str)] = scene_files!(
     "cushion-60-spin",
     "cushion-90",
     "cushion-90-spin",
+    "cushion-hard-90",
+    "cushion-hard-45-spin",
     "head-on-stun",
     "head-on-roll",
     "cut-30",
@@ -53,17 +55,25 @@ pub enum ImpactModels {
     Frictionless,
     /// The thesis's frictional 3D models (section 6.1, 6.2): the difference is measured.
     Mathavan,
+    /// The thesis's frictional ball-ball model and the compliant cushion (issue 25); rapier's
+    /// cushions get the compliant cushion's restitution for each impact's normal speed.
+    Compliant,
 }
 
 impl ImpactModels {
     /// Both choices, in report order.
-    pub const ALL: [ImpactModels; 2] = [ImpactModels::Frictionless, ImpactModels::Mathavan];
+    pub const ALL: [ImpactModels; 3] = [
+        ImpactModels::Frictionless,
+        ImpactModels::Mathavan,
+        ImpactModels::Compliant,
+    ];
 
     /// The name used in scene files and reports.
     pub fn name(self) -> &'static str {
         match self {
             ImpactModels::Frictionless => "frictionless",
             ImpactModels::Mathavan => "mathavan",
+            ImpactModels::Compliant => "compliant",
         }
     }
 
@@ -71,7 +81,12 @@ impl ImpactModels {
     /// not available (the engine does not have them yet).
     pub fn models(self) -> Result<Models, String> {
         let name = self.name();
-        let ball_ball: BallBallModel = serde_json::from_value(json!(name))
+        // The compliant set pairs the frictional ball-ball model with the compliant cushion.
+        let ball_name = match self {
+            ImpactModels::Compliant => ImpactModels::Mathavan.name(),
+            _ => name,
+        };
+        let ball_ball: BallBallModel = serde_json::from_value(json!(ball_name))
             .map_err(|_| format!("ball-ball model \"{name}\" is not in snooker-engine yet"))?;
         let cushion: CushionModel = serde_json::from_value(json!(name))
             .map_err(|_| format!("cushion model \"{name}\" is not in snooker-engine yet"))?;
@@ -80,7 +95,12 @@ impl ImpactModels {
 
     /// True when the impacts have friction.
     pub fn friction(self) -> bool {
-        self == ImpactModels::Mathavan
+        self != ImpactModels::Frictionless
+    }
+
+    /// True when the cushion is the compliant one.
+    pub fn compliant_cushion(self) -> bool {
+        self == ImpactModels::Compliant
     }
 }
 
@@ -89,7 +109,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn both_model_sets_exist() {
+    fn every_model_set_exists() {
         assert_eq!(
             ImpactModels::Frictionless.models().unwrap(),
             Models {
@@ -102,6 +122,13 @@ mod tests {
             Models {
                 ball_ball: BallBallModel::Mathavan,
                 cushion: CushionModel::Mathavan,
+            }
+        );
+        assert_eq!(
+            ImpactModels::Compliant.models().unwrap(),
+            Models {
+                ball_ball: BallBallModel::Mathavan,
+                cushion: CushionModel::Compliant,
             }
         );
     }

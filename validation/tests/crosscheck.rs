@@ -107,6 +107,40 @@ fn airborne_balls_agree() {
 }
 
 #[test]
+fn hard_cushion_impacts_agree_with_the_compliant_cushion_too() {
+    // Issue 25: the cushion scenes also run with the compliant cushion, rapier's cushions
+    // given its restitution at each contact's normal speed. Beyond the rubber's travel
+    // (3.5 m/s, square on) the backing takes energy in both engines: the velocity change at
+    // the first impact is smaller than with the rigid cushion, by about as much in each.
+    let runs = crosscheck::check_scene(&spec("cushion-hard-90.toml"), DEFAULT_DT);
+    let change = |m: ImpactModels| {
+        let r = runs
+            .iter()
+            .find(|r| r.models == m)
+            .expect("a run per model");
+        assert_eq!(r.verdict(), Verdict::Pass, "{}", describe(r));
+        let c = compared(r);
+        let f = c.stretches[0]
+            .comparison
+            .figure(FigureKind::VelocityChange)
+            .expect("the first impact's velocity change");
+        (f.ours, f.rapier)
+    };
+    let (rigid_ours, rigid_rapier) = change(ImpactModels::Mathavan);
+    let (soft_ours, soft_rapier) = change(ImpactModels::Compliant);
+    assert!(soft_ours < rigid_ours - 0.2, "{soft_ours} vs {rigid_ours}");
+    assert!(
+        soft_rapier < rigid_rapier - 0.2,
+        "{soft_rapier} vs {rigid_rapier}"
+    );
+    let (ours_drop, rapier_drop) = (rigid_ours - soft_ours, rigid_rapier - soft_rapier);
+    assert!(
+        (ours_drop - rapier_drop).abs() < 0.2 * ours_drop,
+        "{ours_drop} vs {rapier_drop}"
+    );
+}
+
+#[test]
 fn break_off_first_impact_agrees() {
     let r = crosscheck::check(
         &spec("break-off.toml"),

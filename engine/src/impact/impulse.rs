@@ -23,7 +23,9 @@
 //!
 //! Restitution is energetic (Stronge): compression ends when the normal relative velocity
 //! vanishes; the impact ends when the work of the normal impulse, W(P) = integral of v_n dP,
-//! reaches (1 - e^2) W(P_c) (thesis eqs. 6.12, 6.38).
+//! reaches (1 - e^2) W(P_c) (thesis eqs. 6.12, 6.38). A compliant cushion gives back a share
+//! of W(P_c) that depends on its size (`restitution`): with rate-independent friction the
+//! normal compliance changes nothing else in impulse space (Stronge 2000, §2.3 and ch. 5).
 //!
 //! The equations are integrated adaptively ([`super::dopri`]) in units of the approach speed V,
 //! the ball mass M and radius R; every switch (end of compression, a slip stopping, turning or
@@ -40,6 +42,7 @@
 //! - `measure`: the slip-aware step error;
 //! - `phase`: one phase's laws and its integration; `establish`: Heun's step for a slip
 //!   growing out of zero;
+//! - `restitution`: the work at which restitution ends (rigid, or a compliant backing);
 //! - `solve`: the phases from approach to separation; `euler`: the thesis's own scheme.
 
 mod coulomb;
@@ -53,10 +56,11 @@ mod mode;
 mod pair;
 mod phase;
 mod problem;
+mod restitution;
 mod solve;
 
 pub use error::ImpactError;
-pub use problem::{Impact, ImpactBody, Kinematics, Resolution, Sample};
+pub use problem::{Backing, Impact, ImpactBody, Kinematics, Resolution, Sample};
 pub use solve::TOLERANCE;
 
 #[cfg(test)]

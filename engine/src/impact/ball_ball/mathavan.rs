@@ -19,6 +19,7 @@ pub fn contact(a: &BallState, b: &BallState, p: &Params) -> Impact {
         mu: p.mu_ball,
         mu_cloth: p.mu_slide,
         e: p.e_ball,
+        backing: None,
     }
 }
 

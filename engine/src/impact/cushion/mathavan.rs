@@ -27,6 +27,7 @@ pub fn contact(ball: &BallState, normal: Vec3, p: &Params) -> Impact {
         mu: p.mu_cushion,
         mu_cloth: p.mu_slide,
         e: p.e_cushion,
+        backing: None,
     }
 }
 
@@ -42,6 +43,7 @@ pub fn contact_in_air(towards: Vec3, p: &Params) -> Impact {
         mu: p.mu_cushion,
         mu_cloth: p.mu_slide,
         e: p.e_cushion,
+        backing: None,
     }
 }
 

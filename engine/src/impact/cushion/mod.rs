@@ -1,5 +1,6 @@
 //! Ball-cushion impact models (the same models serve the jaws, about the local normal).
 
+pub mod compliant;
 pub mod frictionless;
 pub mod mathavan;
 
@@ -18,6 +19,10 @@ pub enum CushionModel {
     /// energetic restitution.
     #[default]
     Mathavan,
+    /// The thesis's frictional impact against a cushion that gives way: a rubber of finite
+    /// travel on a damped backing, which gives back less of a hard impact's energy (thesis
+    /// §6.2.5; Hunt and Crossley 1975; Stronge 2000). The rigid model below the rubber's travel.
+    Compliant,
 }
 
 impl CushionModel {
@@ -26,6 +31,7 @@ impl CushionModel {
         match self {
             CushionModel::Frictionless => "frictionless",
             CushionModel::Mathavan => "mathavan",
+            CushionModel::Compliant => "compliant",
         }
     }
 
@@ -48,6 +54,12 @@ impl CushionModel {
             }
             (CushionModel::Mathavan, CushionContact::InAir { towards }) => {
                 mathavan::resolve_in_air(ball, towards, p)
+            }
+            (CushionModel::Compliant, CushionContact::OnCloth { normal }) => {
+                compliant::resolve(ball, normal, p)
+            }
+            (CushionModel::Compliant, CushionContact::InAir { towards }) => {
+                compliant::resolve_in_air(ball, towards, p)
             }
         }
     }

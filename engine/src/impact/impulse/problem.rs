@@ -54,6 +54,22 @@ pub struct Impact {
     pub mu_cloth: f64,
     /// Energetic coefficient of restitution.
     pub e: f64,
+    /// A compliant cushion's backing (None: a rigid contact, restitution e throughout).
+    pub backing: Option<Backing>,
+}
+
+/// The stiff, damped backing behind a cushion rubber of finite travel (the compliant cushion,
+/// [`crate::impact::cushion::compliant`]): the rubber takes the compression's work up to
+/// `bottom_energy` and gives back e^2 of it; the work beyond goes into the backing, which
+/// gives back (1 - `damping` v)^2 of it, v being the speed at which a ball of the reference
+/// mass carries that work (Hunt and Crossley 1975: restitution 1 - alpha v for a contact
+/// force k d^n (1 + 3/2 alpha d')).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Backing {
+    /// Work of the normal impulse at which the rubber's travel is used up, J.
+    pub bottom_energy: f64,
+    /// The backing's Hunt-Crossley damping alpha, s/m.
+    pub damping: f64,
 }
 
 /// Velocities of the two bodies (m/s, rad/s).

@@ -165,14 +165,20 @@ impl Impact {
         }
         // Scaled units: velocities / V, spins * R / V, impulse / (M V), work / (M V^2).
         let (y, v_scale) = self.scaled(k, radius)?;
+        // The backing's energy and damping in the same units.
+        let scaled_impact = Impact {
+            backing: self.backing.map(|b| b.scaled(mass, v_scale)),
+            ..*self
+        };
+        let this = &scaled_impact;
         let mut recorder = Recorder {
             trace,
-            contact: self,
+            contact: this,
             v_scale,
             mass,
         };
         if recorder.trace.is_some() {
-            let first = self.mode_at::<N, Free>(&y, true, 0.0, ZERO_SLIP_PER_TOLERANCE * tol);
+            let first = this.mode_at::<N, Free>(&y, true, 0.0, ZERO_SLIP_PER_TOLERANCE * tol);
             recorder.record(0.0, &y, &first);
         }
         // A fixed body at rest keeps its velocities (zero): only the other entries are
@@ -184,10 +190,10 @@ impl Impact {
             && Free::spin(&y, 1) == Vec3::zeros();
         let (y, outcome) = if paths.reduce && fixed_at_rest {
             let (z, outcome) =
-                self.phases::<FIXED_DIM, Fixed>(Fixed::part(&y), tol, paths, &mut recorder)?;
+                this.phases::<FIXED_DIM, Fixed>(Fixed::part(&y), tol, paths, &mut recorder)?;
             (Fixed::whole(&z), outcome)
         } else {
-            self.phases::<N, Free>(y, tol, paths, &mut recorder)?
+            this.phases::<N, Free>(y, tol, paths, &mut recorder)?
         };
         Ok(Resolution {
             after: self.unscaled(&y, v_scale, radius),
@@ -195,15 +201,6 @@ impl Impact {
             compression_impulse: outcome.compression_impulse * mass * v_scale,
             ..outcome
         })
-    }
-
-    /// The work at which restitution ends, once compression has ended with the work `w_c`
-    /// done: (1 - e^2) W_c (thesis eq. 6.12b). None when nothing is left to restore (e = 0, or
-    /// e so small that e^2 W_c rounds away): restitution is then over at once, not a phase
-    /// searching for a crossing of the work it already has.
-    fn restitution_target(&self, w_c: f64) -> Option<f64> {
-        let target = (1.0 - self.e * self.e) * w_c;
-        (target != w_c).then_some(target)
     }
 
     /// Sets to zero the vertical speed of each ball on the cloth that is within [`LANDED`] of

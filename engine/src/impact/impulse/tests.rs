@@ -46,6 +46,7 @@ fn random_impact(rng: &mut Rng, cushion: bool) -> (Impact, Kinematics) {
         mu,
         mu_cloth,
         e,
+        backing: None,
     };
     loop {
         let mut k = Kinematics {
@@ -298,6 +299,7 @@ fn slips_are_measured_relative_to_their_size() {
         mu: 0.14,
         mu_cloth: 0.2,
         e: 0.98,
+        backing: None,
     };
     let tol = 1e-9;
     let measure = c.measure(tol, |y: &[f64; N]| c.local::<N, Free>(y).slip);
