@@ -47,7 +47,7 @@ const FINE_LINES: usize = 6;
 const PER_LINE: usize = 2;
 /// Fewest and most candidates sampled under noise.
 const MIN_CANDIDATES: usize = 4;
-const MAX_CANDIDATES: usize = 12;
+const MAX_CANDIDATES: usize = 20;
 /// Fewest and most noise samples per candidate.
 const MIN_SAMPLES: usize = 8;
 const MAX_SAMPLES: usize = 96;
@@ -96,27 +96,41 @@ struct PotObjective<'a> {
     pot: &'a str,
 }
 
-/// The cue ball's last leg in `shot`: from its last impact (or its start) to where it
-/// stopped: its length and unit heading.
-fn last_leg(shot: &Shot, cue: usize) -> (f64, Vec3) {
-    let start = shot
+/// The cue ball's way in `shot` after its first contact: the length of its path from there to
+/// where it stopped, and the unit heading of its last leg (from its last impact).
+fn cue_path(shot: &Shot, cue: usize) -> (f64, Vec3) {
+    let p = &shot.params;
+    let track = &shot.tracks[cue];
+    let impacts: Vec<f64> = shot
         .events
         .iter()
-        .rev()
-        .find(|e| {
+        .filter(|e| {
             e.balls.contains(&cue) && matches!(e.kind, EventKind::BallBall | EventKind::BallCushion)
         })
-        .map_or(0.0, |e| e.t);
-    let p = &shot.params;
-    let a = shot.tracks[cue].state_at(start, p).pos;
-    let b = shot.tracks[cue].state_at(shot.duration, p).pos;
-    let d = (b - a).xy();
-    let len = d.norm();
-    if len > 0.0 {
-        (len, Vec3::new(d.x / len, d.y / len, 0.0))
-    } else {
-        (0.0, Vec3::zeros())
+        .map(|e| e.t)
+        .collect();
+    let (Some(&first), Some(&last)) = (impacts.first(), impacts.last()) else {
+        return (0.0, Vec3::zeros());
+    };
+    // The path's length, sampled finely enough for a cushion's corner.
+    const STEPS: usize = 64;
+    let mut length = 0.0;
+    let mut prev = track.state_at(first, p).pos;
+    for k in 1..=STEPS {
+        let t = first + (shot.duration - first) * k as f64 / STEPS as f64;
+        let q = track.state_at(t, p).pos;
+        length += (q - prev).xy().norm();
+        prev = q;
     }
+    let a = track.state_at(last, p).pos;
+    let d = (prev - a).xy();
+    let n = d.norm();
+    let heading = if n > 0.0 {
+        Vec3::new(d.x / n, d.y / n, 0.0)
+    } else {
+        Vec3::zeros()
+    };
+    (length, heading)
 }
 
 impl Objective for PotObjective<'_> {
@@ -128,9 +142,9 @@ impl Objective for PotObjective<'_> {
         }
         match self.frame.next(&v) {
             Next::Play(next) if next.state().to_play == self.frame.state().to_play => {
-                let (leg, heading) = last_leg(shot, problem.cue);
+                let (path, heading) = cue_path(shot, problem.cue);
                 let gain = v.points as f64 - v.foul_points() as f64;
-                Some(gain + self.valuer.robust(&next, trial.cue.speed, leg, heading))
+                Some(gain + self.valuer.robust(&next, trial.cue.speed, path, heading))
             }
             _ => Some(o.value),
         }
@@ -369,7 +383,7 @@ impl Player {
             seen.push(key);
             fresh
         });
-        let k = ((samples_budget / (MIN_SAMPLES as u64 * 4)) as usize)
+        let k = ((samples_budget / (MIN_SAMPLES as u64 * 6)) as usize)
             .clamp(MIN_CANDIDATES, MAX_CANDIDATES)
             .min(found.len());
         let n = (samples_budget as usize)

@@ -74,13 +74,15 @@ impl Valuer {
     }
 
     /// The value of `frame` to the player to play it, the cue ball having stopped there after
-    /// a stroke at cue speed `cue_speed` whose last leg ran `leg` metres along the unit plan
-    /// vector `heading`: the mean of [`Valuer::from`] over where the cue ball stops when the
-    /// speed errs (the distance a ball runs goes as its speed squared, so a leg of length L
-    /// ends 2 L sd / v further or shorter for a speed error sd; three-point Gauss–Hermite
-    /// over that normal spread; a point where the cue ball would have run into a ball counts
-    /// nothing). A position on a knife's edge counts for less than one the noise cannot spoil.
-    pub fn robust(&self, frame: &Frame, cue_speed: f64, leg: f64, heading: Vec3) -> f64 {
+    /// a stroke at cue speed `cue_speed` that ran it `path` metres after its first contact,
+    /// arriving along the unit plan vector `heading`: the mean of [`Valuer::from`] over where
+    /// the cue ball stops when the stroke errs. The distance a ball runs goes as its speed
+    /// squared, so a path of length L ends 2 L sd / v further or shorter for a speed error sd;
+    /// across its way it strays by half that (the heading's errors, turned by each contact and
+    /// cushion). Three-point Gauss–Hermite both ways over those normal spreads; a point where
+    /// the cue ball would have run into a ball counts nothing (a cannon is not counted on).
+    /// A position on a knife's edge counts for less than one the noise cannot spoil.
+    pub fn robust(&self, frame: &Frame, cue_speed: f64, path: f64, heading: Vec3) -> f64 {
         let Some(i) = frame.cue_index() else {
             return self.position(frame);
         };
@@ -88,7 +90,9 @@ impl Valuer {
             return self.position(frame);
         }
         let at = frame.balls()[i].state.pos;
-        let spread = 2.0 * leg * self.speed_sd / cue_speed.max(1e-3);
+        let along = 2.0 * path * self.speed_sd / cue_speed.max(1e-3);
+        let across = 0.5 * along;
+        let side = Vec3::new(-heading.y, heading.x, 0.0);
         let (l, wid) = (frame.table().length, frame.table().width);
         let r = frame.params().ball_radius;
         const Z: [f64; 3] = [-1.224_744_871_391_589, 0.0, 1.224_744_871_391_589];
@@ -100,20 +104,19 @@ impl Valuer {
             .filter(|&(j, _)| j != i)
             .map(|(_, b)| b.state.pos)
             .collect();
-        Z.iter()
-            .zip(W)
-            .map(|(&z, w)| {
-                let p = at + z * spread * heading;
+        let mut total = 0.0;
+        for (&za, wa) in Z.iter().zip(W) {
+            for (&zc, wc) in Z.iter().zip(W) {
+                let p = at + za * along * heading + zc * across * side;
                 let p = Vec3::new(p.x.clamp(r, l - r), p.y.clamp(r, wid - r), at.z);
-                // Running on into a ball: a cannon, whose outcome is not counted on.
-                let blocked = z != 0.0 && others.iter().any(|o| (o - p).xy().norm() < 2.0 * r);
-                if blocked {
-                    0.0
-                } else {
-                    w * self.from(frame, p).0
+                let moved = za != 0.0 || zc != 0.0;
+                let blocked = moved && others.iter().any(|o| (o - p).xy().norm() < 2.0 * r);
+                if !blocked {
+                    total += wa * wc * self.from(frame, p).0;
                 }
-            })
-            .sum()
+            }
+        }
+        total
     }
 
     /// The value of `frame` to the player to play it: the best over the balls on and the
