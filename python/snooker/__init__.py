@@ -34,6 +34,8 @@ from . import _snooker
 from ._snooker import CannotPot, SimulationError
 from .records import (
     BallState,
+    Considered,
+    Decision,
     Event,
     ImpactReport,
     OffTable,
@@ -41,6 +43,7 @@ from .records import (
     PlannedShot,
     Pot,
     ShotResult,
+    Stroke,
 )
 
 __all__ = [
@@ -63,6 +66,11 @@ __all__ = [
     "simulate",
     "simulate_many",
     "plan",
+    "play",
+    "choose",
+    "Stroke",
+    "Decision",
+    "Considered",
     "impact_ball_ball",
     "impact_cushion",
 ]
@@ -286,6 +294,61 @@ def plan(
         cue_ball,
     )
     return Plan.from_dict(doc)
+
+
+def play(
+    source: FrameLike,
+    noise: Union[None, str, float, dict] = None,
+    seed: int = 1,
+    effort: int = 4000,
+    visit: bool = True,
+    agent: str = "player",
+    opponent: str = "player",
+    max_strokes: int = 300,
+) -> List[Stroke]:
+    """Plays from a frame as ``snooker play`` does: the player chooses every stroke (candidate
+    pots of every kind planned by the planner, sampled under the execution noise, valued by
+    the points and the position left; a safety when no pot is worth its risk; the cue ball in
+    hand placed in the D), the stroke is played with the noise added and judged by the rules,
+    until the player at the table misses or fouls (``visit=True``: one break) or the frame
+    ends (``visit=False``: ``agent`` for the side to play, ``opponent`` for the other; a frame
+    still going after ``max_strokes`` stops there). Returns the strokes (the play log's lines,
+    formats.md "Play log", as objects; ``to_dict()`` is the line).
+
+    ``noise`` as for ``plan`` (``"standard"``, ``0`` or a dict of standard deviations); given
+    ``seed`` and ``effort`` (the search's budget per stroke in simulated shots) the strokes are
+    the same on any machine and any number of threads. Agents: ``"player"`` or ``"greedy"``
+    (the likeliest pot, no position play, no safety)."""
+    lines = _snooker.play(
+        frame(source),
+        _noise(noise),
+        int(seed),
+        int(effort),
+        bool(visit),
+        str(agent),
+        str(opponent),
+        int(max_strokes),
+    )
+    return [Stroke.from_dict(line) for line in lines]
+
+
+def choose(
+    source: FrameLike,
+    noise: Union[None, str, float, dict] = None,
+    seed: int = 1,
+    stroke: int = 1,
+    effort: int = 4000,
+    agent: str = "player",
+) -> Decision:
+    """The stroke the player (or ``agent="greedy"``) chooses for a frame, expecting the
+    execution ``noise``: where the cue ball in hand goes, the nomination, the strike meant
+    (a dict of it is what ``Frame.play`` takes: ``decision.strike.to_dict()``) and what was
+    planned. Its random draws come from (``seed``, ``stroke``): the same arguments, the same
+    decision."""
+    doc = _snooker.choose(
+        frame(source), _noise(noise), int(seed), int(stroke), int(effort), str(agent)
+    )
+    return Decision.from_dict(doc)
 
 
 def _noise(noise) -> dict:

@@ -15,6 +15,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+mod play;
 mod rules;
 
 create_exception!(
@@ -399,6 +400,8 @@ fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add_function(wrap_pyfunction!(play::play, m)?)?;
+    m.add_function(wrap_pyfunction!(play::choose, m)?)?;
     m.add_function(wrap_pyfunction!(impact_ball_ball, m)?)?;
     m.add_function(wrap_pyfunction!(impact_cushion, m)?)?;
     m.add("SimulationError", m.py().get_type::<SimulationError>())?;
