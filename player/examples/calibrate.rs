@@ -52,10 +52,8 @@ fn main() {
                 for k in 0..n {
                     let mut rng = rng_for(seed, &[t.ball as u64, t.pocket as u64, k]);
                     let ex = noise.apply(&trial.cue, &frame.balls()[cue].state, p, &mut rng);
-                    if let Some(tr) = t.problem.trial(&ex, &line) {
-                        if tr.pots() {
-                            pots += 1;
-                        }
+                    if t.problem.trial(&ex, &line).is_some_and(|tr| tr.pots()) {
+                        pots += 1;
                     }
                 }
                 rows.push((
