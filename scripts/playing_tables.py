@@ -27,12 +27,17 @@ def wilson(k: int, n: int) -> tuple:
     return (max(0.0, centre - half), min(1.0, centre + half))
 
 
-def read(paths):
-    rows = []
+def read(paths, key):
+    """The lines of `paths`, one per (noise, key): a layout or frame run twice (the runs are
+    deterministic: the same line) counts once."""
+    rows = {}
     for p in paths:
         with open(p) as f:
-            rows += [json.loads(line) for line in f if line.strip()]
-    return rows
+            for line in f:
+                if line.strip():
+                    r = json.loads(line)
+                    rows.setdefault((r["noise"], r[key]), r)
+    return list(rows.values())
 
 
 def open_table(rows):
@@ -79,10 +84,10 @@ def main(argv):
     else:
         ot, fr = argv, []
     if ot:
-        open_table(read(ot))
+        open_table(read(ot, "seed"))
     if fr:
         print()
-        frames(read(fr))
+        frames(read(fr, "frame"))
 
 
 if __name__ == "__main__":
