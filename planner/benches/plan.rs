@@ -42,7 +42,7 @@ fn reachable_problems(tol: f64) -> Vec<Problem> {
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let mut problems = Vec::new();
     while problems.len() < POSITIONS {
-        let Some(case) = reachable::draw(&mut rng) else {
+        let Some(case) = reachable::draw(&mut rng, reachable::Pots::Direct) else {
             continue;
         };
         let scene = snooker_scene::parse(&case.text, "case.toml").expect("scene");

@@ -22,6 +22,7 @@ pub mod batch;
 pub mod discrepancy;
 pub mod impact;
 pub mod plan;
+pub mod play;
 pub mod referee;
 pub mod serve;
 pub mod simulate;
