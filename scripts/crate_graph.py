@@ -7,7 +7,7 @@ Usage: scripts/crate_graph.py          rewrite the page
        scripts/crate_graph.py --check  exit 1 if the page is not what the tree gives (the test
                                        command runs this)
 """
-import json, os, subprocess, sys
+import json, os, re, subprocess, sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
 PAGE = os.path.join(ROOT, 'docs', 'architecture.md')
@@ -89,6 +89,8 @@ def modules():
             joined = ' '.join(doc)
             cut = joined.find('. ')
             first = joined if cut < 0 else joined[:cut + 1]
+            # rustdoc's intra-doc links ([`Name`], [`Name`](path)) read as plain code here.
+            first = re.sub(r'\[(`[^`]*`)\](\([^)]*\))?', r'\1', first)
             first = first.replace('|', '\\|')
             lines.append(f'| `{os.path.relpath(path, ROOT)}` | {first} |')
         lines.append('')
