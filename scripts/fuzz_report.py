@@ -1,42 +1,123 @@
 #!/usr/bin/env python3
 """Aggregates the part logs of a long fuzz run (fuzz --from K --scenes N, one log per part:
-the harness's stdout) into the book's Robustness page (docs/robustness.md, between its
-`fuzz_report.py` markers). Usage: scripts/fuzz_report.py LOG_DIR [COMMIT]"""
-import glob, os, re, sys, collections
-tot=collections.Counter(); phys=collections.Counter(); reasons=collections.Counter(); n=0; fails=0
-for f in sorted(glob.glob(sys.argv[1] + '/part-*.log')):
-    lines=open(f).read().splitlines()
-    if not lines: continue
-    m=re.match(r'seed (\d+): scenes (\d+)\.\.(\d+) \((\d+) scenes\), (\d+) failing',lines[0])
-    if not m: continue
-    n+=int(m.group(4)); fails+=int(m.group(5)); mode=None; seed=m.group(1)
-    for l in lines[3:]:
-        if l.startswith('near-frictionless'): mode='r'; continue
-        if mode=='r':
-            m3=re.match(r'^\s+(still moving at max_time|event cap)\s+(.+?)\s+(\d+)$',l)
-            if m3: reasons[(m3.group(1),m3.group(2))]+=int(m3.group(3))
+the harness's stdout) into the book's Robustness page (docs/robustness.md): the run's line, its
+endings by kind and its coverage table, written between the markers <!-- fuzz-report --> and
+<!-- /fuzz-report -->. Usage: scripts/fuzz_report.py LOG_DIR [COMMIT]"""
+import collections
+import glob
+import os
+import re
+import sys
+
+ENDINGS = ['at rest', 'rejected', 'still moving at max_time', 'event cap', 'stuck at an instant',
+           'impact failed', 'non-finite', 'panic']
+LABELS = {'still moving at max_time': 'still moving when cut (30 s)',
+          'event cap': 'event cap (cut at 5,000)',
+          'rejected': 'rejected with a message naming the file'}
+
+kinds = []            # in the order the logs list them
+phys = collections.Counter()
+other = collections.Counter()
+reasons = collections.Counter()
+coverage = collections.defaultdict(lambda: collections.Counter())
+features = []
+n = fails = 0
+seed = None
+parts = sorted(glob.glob(os.path.join(sys.argv[1], 'part-*.log')))
+for f in parts:
+    lines = open(f).read().splitlines()
+    if not lines:
+        continue
+    m = re.match(r'seed (\d+): scenes (\d+)\.\.(\d+) \((\d+) scenes\), (\d+) failing', lines[0])
+    if not m:
+        continue
+    seed = m.group(1)
+    n += int(m.group(4))
+    fails += int(m.group(5))
+    mode = 'endings'
+    for line in lines[1:]:
+        if line.startswith('coverage:'):
+            mode = 'coverage-head'
             continue
-        m4=re.match(r'^(\S+)\s+(at rest|rejected|still moving at max_time|event cap|stuck at an instant|impact failed|non-finite|panic)\s+(\d+)\s+(\d+)$',l)
-        if m4:
-            k=(m4.group(1),m4.group(2)); phys[k]+=int(m4.group(3)); tot[k]+=int(m4.group(4))
-f=os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'robustness.md')
-s=open(f).read()
-c=lambda v: f"{v:,}"
-rows=[('strike','at rest','at rest'),('adversarial','at rest','at rest'),('given-motion','at rest','at rest'),('airborne','at rest','at rest'),
-('parameters','at rest','at rest'),('parameters','still moving at max_time','still moving when cut (30 s)'),('parameters','event cap','event cap (cut at 5,000)'),
-('cradle','at rest','at rest'),('break-off','at rest','at rest'),('hostile','rejected','rejected with a message naming the file'),
-('hostile','at rest','at rest (a corruption that left a valid scene)'),('hostile','still moving at max_time','still moving when cut')]
-known=set((a,b) for a,b,_ in rows)
-extra=[k for k in set(phys)|set(tot) if k not in known]
-table="| kind | ending | physical cloth | near-frictionless cloth |\n|---|---|---|---|\n"+"".join(f"| {a} | {lab} | {c(phys[(a,b)])} | {c(tot[(a,b)])} |\n" for a,b,lab in rows)+"".join(f"| {a} | {b} | {c(phys[(a,b)])} | {c(tot[(a,b)])} |\n" for a,b in sorted(extra))
-r=lambda e,w: c(reasons[(e,w)])
-M='still moving at max_time'; E='event cap'
-done = n>=1000000
+        if line.startswith('near-frictionless'):
+            mode = 'reasons'
+            continue
+        if mode == 'endings':
+            m4 = re.match(r'^(\S+)\s+(' + '|'.join(ENDINGS) + r')\s+(\d+)\s+(\d+)$', line)
+            if m4:
+                k = (m4.group(1), m4.group(2))
+                if m4.group(1) not in kinds:
+                    kinds.append(m4.group(1))
+                phys[k] += int(m4.group(3))
+                other[k] += int(m4.group(4))
+        elif mode == 'coverage-head':
+            features = line.split()[2:]
+            mode = 'coverage'
+        elif mode == 'coverage':
+            cells = line.split()
+            if len(cells) == len(features) + 2:
+                row = coverage[cells[0]]
+                row['scenes'] += int(cells[1])
+                for name, v in zip(features, cells[2:]):
+                    row[name] += int(v)
+        elif mode == 'reasons':
+            m3 = re.match(r'^\s+(still moving at max_time|event cap)\s+(.+?)\s+(\d+)$', line)
+            if m3:
+                reasons[(m3.group(1), m3.group(2))] += int(m3.group(3))
+
+c = lambda v: f"{v:,}"
+endings = "| kind | ending | physical cloth | near-frictionless cloth |\n|---|---|---|---|\n"
+for kind in kinds:
+    for e in ENDINGS:
+        if phys[(kind, e)] or other[(kind, e)]:
+            label = LABELS.get(e, e)
+            if kind == 'hostile' and e == 'at rest':
+                label = 'at rest (a corruption that left a valid scene)'
+            endings += f"| {kind} | {label} | {c(phys[(kind, e)])} | {c(other[(kind, e)])} |\n"
+
+cov = "| kind | scenes | " + " | ".join(f"`{f}`" for f in features) + " |\n"
+cov += "|---|---|" + "---|" * len(features) + "\n"
+total = collections.Counter()
+for kind in kinds:
+    row = coverage[kind]
+    total.update(row)
+    cov += f"| {kind} | {c(row['scenes'])} | " + " | ".join(c(row[f]) for f in features) + " |\n"
+cov += f"| all | {c(total['scenes'])} | " + " | ".join(c(total[f]) for f in features) + " |\n"
+
+M, E = 'still moving at max_time', 'event cap'
+why = lambda e, w: c(reasons[(e, w)])
+done = n >= 1000000
 commit = f", at commit {sys.argv[2]}" if len(sys.argv) > 2 else ""
-head=(f"**The run of 10⁶ scenes** (seed {seed}{commit}, in parts of 50,000 with\n`--from`; `scripts/fuzz_report.py LOG_DIR COMMIT` makes this table from the parts' logs): "+
- (f"**{fails} failures** in {c(n)} scenes." if done else f"under way; the first {c(n)} scenes have **{fails} failures**.")+" Their endings:\n\n")
-body=(f"\nNo shot on a physical cloth needed the event cap or ran out of time. Why the cloth of each\nshot that did not finish was near-frictionless (the first reason that applies): a sliding\ndeceleration below 0.05 g0, {r(M,'sliding deceleration < 0.05 g0')} still moving and {r(E,'sliding deceleration < 0.05 g0')} at the cap; a rolling deceleration below\n0.005 g0, {r(M,'rolling deceleration < 0.005 g0')} and {r(E,'rolling deceleration < 0.005 g0')}; sidespin decay below 5 rad/s², {r(M,'sidespin decay < 5 rad/s^2')} and {r(E,'sidespin decay < 5 rad/s^2')}; tilt and nap above half the\nrolling resistance, {r(M,'tilt and nap > half the rolling resistance')} and {r(E,'tilt and nap > half the rolling resistance')}. No scene was stuck at an instant, no impact failed, nothing\nnon-finite, no panic, every scene deterministic.\n")
-a="<!-- fuzz_report.py writes from here -->\n"; i=s.index(a)+len(a); j=s.index("<!-- fuzz_report.py writes up to here -->", i)
-s=s[:i]+head+table+body+s[j:]
-open(f,'w').write(s)
-print(n,fails,extra)
+head = (f"**The run of 10⁶ scenes** (seed {seed}{commit}, in parts of 50,000 with `--from`; "
+        "`scripts/fuzz_report.py LOG_DIR COMMIT` writes this part of the page from the parts' "
+        "logs): "
+        + (f"**{fails} failures** in {c(n)} scenes." if done
+           else f"under way; the first {c(n)} scenes have **{fails} failures**.")
+        + " Their endings:\n\n")
+unfinished = sum(phys[(k, e)] for k in kinds for e in (M, E))
+broken = sum(phys[(k, e)] + other[(k, e)] for k in kinds
+             for e in ('stuck at an instant', 'impact failed', 'non-finite', 'panic'))
+clean = ("No shot on a physical cloth needed the event cap or ran out of time. " if unfinished == 0
+         else f"{c(unfinished)} shots on a physical cloth did not finish. ")
+clean += ("No scene was stuck at an instant, no impact failed, nothing non-finite, no panic, every "
+          "scene deterministic. " if broken == 0 and fails == 0 else "")
+body = ("\n" + clean + "Why the cloth of each shot that did not finish was near-frictionless (the first reason "
+        f"that applies): a sliding deceleration below 0.05 g0, {why(M, 'sliding deceleration < 0.05 g0')} "
+        f"still moving and {why(E, 'sliding deceleration < 0.05 g0')} at the cap; a rolling deceleration "
+        f"below 0.005 g0, {why(M, 'rolling deceleration < 0.005 g0')} and {why(E, 'rolling deceleration < 0.005 g0')}; "
+        f"sidespin decay below 5 rad/s², {why(M, 'sidespin decay < 5 rad/s^2')} and {why(E, 'sidespin decay < 5 rad/s^2')}; "
+        f"tilt and nap above half the rolling resistance, {why(M, 'tilt and nap > half the rolling resistance')} "
+        f"and {why(E, 'tilt and nap > half the rolling resistance')}.\n\n"
+        "Coverage: how many scenes of each kind reached each event kind, and each class of issue 21 "
+        "(`cushion_in_air`: a cushion, jaw or facing met by a ball in the air; `pot_from_air`; "
+        "`over_jaw`, `over_pocket_back`: a ball leaving the table there; `micro_collision`: an "
+        "impact approaching at 2 mm/s or less; `steep_cue`: a strike at 60° or steeper; "
+        "`offset_beyond_r_plus_r`: a strike with an offset coordinate beyond R + r, valid only "
+        "with a steep cue):\n\n")
+page = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'robustness.md')
+s = open(page).read()
+i = s.index('<!-- fuzz-report -->') + len('<!-- fuzz-report -->')
+j = s.index('<!-- /fuzz-report -->')
+s = s[:i] + '\n' + head + endings + body + cov + s[j:]
+open(page, 'w').write(s)
+print(n, fails, seed)

@@ -68,4 +68,4 @@ fn the_break_off_ends_exactly_where_it_always_has() {
 }
 
 /// The break-off's fingerprint (`final_state_hash`).
-const PINNED_BREAK_OFF: u64 = 0x383c_fa0d_7f27_f05f;
+const PINNED_BREAK_OFF: u64 = 0x43c4_7a34_78d2_04ef;

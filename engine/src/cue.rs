@@ -82,6 +82,15 @@ fn err(key: &'static str, reason: String) -> CueError {
     CueError { key, reason }
 }
 
+/// A length for a message: in millimetres, or in metres with an exponent when large.
+fn length_text(metres: f64) -> String {
+    if metres < 10.0 {
+        format!("{:.1} mm", metres * 1e3)
+    } else {
+        format!("{metres:.3e} m")
+    }
+}
+
 /// tan(squirt) / 1 for a contact whose side offset is `b` (signed), from the gripping-tip
 /// model with end mass `m_e` (see the module docs); the sign follows the offset.
 pub fn squirt_ratio(b: f64, p: &Params) -> f64 {
@@ -130,19 +139,6 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
             format!("a heading must lie in [-2 pi, 2 pi] rad, got {}", cue.aim),
         ));
     }
-    for v in cue.offset {
-        if v.abs() > p.ball_radius + p.cue_tip_radius {
-            return Err(err(
-                "offset",
-                format!(
-                    "the cue's axis passes {:.1} mm from the ball's centre and misses it \
-                     (limit {:.1} mm)",
-                    v.abs() * 1e3,
-                    (p.ball_radius + p.cue_tip_radius) * 1e3
-                ),
-            ));
-        }
-    }
     if !(0.0..=MAX_ELEVATION).contains(&cue.elevation) {
         return Err(err(
             "elevation",
@@ -157,21 +153,27 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
     let side = heading.cross(&Vec3::z());
     let (sin_e, cos_e) = cue.elevation.sin_cos();
     let dir = cos_e * heading - sin_e * Vec3::z();
-    let o = cue.offset[0] * side + cue.offset[1] * Vec3::z();
-
-    // Tip centre on the axis at R + r from the ball's centre, on the cue's side (thesis eq. 7.5).
-    let od = o.dot(&dir);
-    let disc = od * od - o.norm_squared() + (r + tip) * (r + tip);
-    if disc < 0.0 {
+    // The axis's distance from the ball's centre: `offset` lies in the vertical plane across
+    // the heading, which a cue inclined by `elevation` crosses obliquely, so the height part is
+    // foreshortened by cos(elevation) (a steep cue's axis passes near the centre for a large
+    // height offset). The tip reaches the ball only if it is within R + r.
+    let miss = cue.offset[0].hypot(cue.offset[1] * cos_e);
+    if miss > r + tip {
         return Err(err(
             "offset",
             format!(
-                "the cue's axis passes {:.1} mm from the ball's centre and misses it (limit {:.1} mm)",
-                (o.norm_squared() - od * od).sqrt() * 1e3,
+                "the cue's axis passes {} from the ball's centre and misses it (limit {:.1} mm)",
+                length_text(miss),
                 (r + tip) * 1e3
             ),
         ));
     }
+    let o = cue.offset[0] * side + cue.offset[1] * Vec3::z();
+
+    // Tip centre on the axis at R + r from the ball's centre, on the cue's side (thesis eq. 7.5);
+    // the axis is within R + r of the centre, so the root is real but for rounding.
+    let od = o.dot(&dir);
+    let disc = (od * od - o.norm_squared() + (r + tip) * (r + tip)).max(0.0);
     let tip_centre = o - (od + disc.sqrt()) * dir;
     if p.ball_radius + tip_centre.z < tip {
         return Err(err(

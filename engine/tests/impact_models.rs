@@ -31,6 +31,55 @@ fn rolling_head_on_leaves_the_object_ball_at_094_v() {
 }
 
 #[test]
+fn no_impact_adds_more_energy_than_the_solvers_tolerance_of_its_own() {
+    // The bound the audit allows an impact (issue 21): IMPACT_ENERGY_SHARE (the solver's
+    // tolerance) of the impact's kinetic energy, whatever the speed and the balls' mass and
+    // size. Random impacts of both models, half with restitution 1 and a third without
+    // friction (no loss to hide a gain), speeds to 30 m/s, masses 0.05-0.5 kg, radii
+    // 15-40 mm.
+    use snooker_engine::audit::IMPACT_ENERGY_SHARE;
+    let energy = |k: &Kinematics, mass: f64, r: f64| -> f64 {
+        let inertia = 0.4 * mass * r * r;
+        (0..2)
+            .map(|i| {
+                0.5 * mass * k.vel[i].norm_squared() + 0.5 * inertia * k.spin[i].norm_squared()
+            })
+            .sum()
+    };
+    for cushion in [false, true] {
+        let mut rng = sweep::Rng(sweep::SEED ^ 0x21);
+        let mut worst: f64 = 0.0;
+        for k in 0..100_000 {
+            let mut impact = sweep::random_impact(&mut rng, cushion);
+            if k % 2 == 0 {
+                impact.contact.e = 1.0;
+            }
+            if k % 3 == 0 {
+                impact.contact.mu = 0.0;
+                impact.contact.mu_cloth = 0.0;
+            }
+            let scale = rng.uniform(0.2, 5.0);
+            let (mass, r) = (rng.uniform(0.05, 0.5), rng.uniform(0.015, 0.04));
+            let mut kin = impact.kin;
+            for i in 0..2 {
+                kin.vel[i] *= scale;
+                kin.spin[i] *= scale;
+            }
+            let out = impact.contact.solve(&kin, r, mass, None).unwrap();
+            let before = energy(&kin, mass, r);
+            let gain = (energy(&out.after, mass, r) - before) / before;
+            worst = worst.max(gain);
+            assert!(
+                gain <= IMPACT_ENERGY_SHARE,
+                "{}: gained {gain:e} of its energy",
+                impact.text
+            );
+        }
+        println!("cushion {cushion}: largest gain {worst:e} of the impact's energy");
+    }
+}
+
+#[test]
 fn rolling_perpendicular_cushion_rebound_is_091_v() {
     // Thesis §6.2.5 / peers.md: e_e = 0.98, mu_w = 0.14 give a rebound of about 0.91 V.
     let p = Params::default();

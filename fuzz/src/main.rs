@@ -41,6 +41,10 @@ struct Args {
     /// Run scene K alone and print its file.
     #[arg(long, value_name = "K")]
     only: Option<u64>,
+    /// Also write each scene's digest to this file, one `K DIGEST` line per scene: two runs'
+    /// files show which scenes a change touched.
+    #[arg(long, value_name = "FILE")]
+    digests: Option<PathBuf>,
 }
 
 /// Scene `k` of run `seed`: its own generator, so any scene can be rerun alone.
@@ -127,6 +131,15 @@ fn main() -> ExitCode {
         .iter()
         .fold(0u64, |h, r| h.rotate_left(5) ^ r.2.digest);
     println!("digest of the results: {digest:016x}");
+    if let Some(path) = &args.digests {
+        let lines: String = results
+            .iter()
+            .map(|r| format!("{} {:016x}\n", r.0, r.2.digest))
+            .collect();
+        if let Err(e) = std::fs::write(path, lines) {
+            eprintln!("error: cannot write {}: {e}", path.display());
+        }
+    }
     println!(
         "time in scenes {total:.1} s (mean {:.2} ms); slowest: {}",
         1e3 * total / (end - first).max(1) as f64,
@@ -138,7 +151,7 @@ fn main() -> ExitCode {
             .join(", ")
     );
     println!(
-        "{:<14} {:<26} {:>9} {:>9}",
+        "{:<16} {:<26} {:>9} {:>9}",
         "kind", "ending", "physical", "other"
     );
     for kind in Kind::ALL {
@@ -165,13 +178,40 @@ fn main() -> ExitCode {
         for e in endings {
             let n = |phys| table.get(&(kind, e, phys)).copied().unwrap_or(0);
             println!(
-                "{:<14} {:<26} {:>9} {:>9}",
+                "{:<16} {:<26} {:>9} {:>9}",
                 kind.name(),
                 e.name(),
                 n(true),
                 n(false)
             );
         }
+    }
+    // Coverage: how many scenes of each kind reached each event kind and class.
+    let mut coverage: BTreeMap<Kind, (u64, [u64; check::FEATURES.len()])> = BTreeMap::new();
+    for (_, kind, v, _, _) in &results {
+        let row = coverage
+            .entry(*kind)
+            .or_insert((0, [0; check::FEATURES.len()]));
+        row.0 += 1;
+        for (k, n) in row.1.iter_mut().enumerate() {
+            *n += u64::from(v.reached >> k & 1);
+        }
+    }
+    println!("coverage: scenes of each kind that reached each event kind and class");
+    let mut header = format!("{:<16} {:>7}", "kind", "scenes");
+    for f in check::FEATURES {
+        let _ = write!(header, " {f:>w$}", w = f.len().max(6));
+    }
+    println!("{header}");
+    for kind in Kind::ALL {
+        let Some((n, counts)) = coverage.get(&kind) else {
+            continue;
+        };
+        let mut line = format!("{:<16} {n:>7}", kind.name());
+        for (f, c) in check::FEATURES.iter().zip(counts) {
+            let _ = write!(line, " {c:>w$}", w = f.len().max(6));
+        }
+        println!("{line}");
     }
     // Why the cloth was not a physical one, for the shots that did not stop.
     let mut why: BTreeMap<(check::SceneEnding, &str), u64> = BTreeMap::new();

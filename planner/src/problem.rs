@@ -222,19 +222,27 @@ impl Bounds {
         }
     }
 
-    /// The engine's limits on variable `v` for parameters `p` (cue speed, elevation, the
-    /// miscue limit of thesis eq. 7.7).
-    pub fn limits(v: StrikeVariable, p: &Params) -> Interval {
-        let reach = p.miscue_limit * p.ball_radius;
+    /// The engine's limits on variable `v` for parameters `p`, with the elevations `self`
+    /// allows: the cue's speed and elevation ranges, and offsets at which the cue's axis passes
+    /// within the miscue limit of the centre (`cue.rs`, thesis eq. 7.7: the contact lies
+    /// miscue_limit R from the axis when the axis passes miscue_limit (R + r) from the centre).
+    /// A height offset is foreshortened by cos(elevation), so a steeper cue allows a larger one.
+    pub fn limits(&self, v: StrikeVariable, p: &Params) -> Interval {
+        let reach = p.miscue_limit * (p.ball_radius + p.cue_tip_radius);
         let (lo, hi) = match v {
             StrikeVariable::Speed => (1e-3, MAX_CUE_SPEED),
             StrikeVariable::Elevation => (0.0, MAX_ELEVATION),
-            StrikeVariable::Side | StrikeVariable::Height => (-reach, reach),
+            StrikeVariable::Side => (-reach, reach),
+            StrikeVariable::Height => {
+                let h = reach / self.elevation.hi.cos();
+                (-h, h)
+            }
         };
         Interval { lo, hi }
     }
 
-    /// Checks every interval: finite, ordered, and within [`Bounds::limits`].
+    /// Checks every interval (in the order of [`StrikeVariable::ALL`], elevation before the
+    /// offsets it limits): finite, ordered, and within [`Bounds::limits`].
     pub fn check(&self, p: &Params) -> Result<(), PlanError> {
         for v in StrikeVariable::ALL {
             let iv = self.get(v);
@@ -245,12 +253,21 @@ impl Bounds {
             if iv.lo > iv.hi {
                 return Err(bad(field, "the low end is above the high end"));
             }
-            let allowed = Bounds::limits(v, p);
+            let allowed = self.limits(v, p);
             if iv.lo < allowed.lo || iv.hi > allowed.hi {
+                let why = match v {
+                    StrikeVariable::Side | StrikeVariable::Height => format!(
+                        ": beyond, the cue's axis passes more than miscue_limit (R + r) = {:.1} mm \
+                         from the centre at every elevation up to {:.4} rad, a miscue",
+                        p.miscue_limit * (p.ball_radius + p.cue_tip_radius) * 1e3,
+                        self.elevation.hi
+                    ),
+                    _ => String::new(),
+                };
                 return Err(bad(
                     field,
                     format!(
-                        "outside the engine's strike limits [{}, {}] {}",
+                        "outside the engine's strike limits [{:.4}, {:.4}] {}{why}",
                         allowed.lo,
                         allowed.hi,
                         v.unit()
@@ -502,5 +519,49 @@ impl Problem {
 
     pub(crate) fn count_shot(&self) {
         self.shots.fetch_add(1, Ordering::Relaxed);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use snooker_engine::BallState;
+    use snooker_engine::cue::{self, Cue};
+
+    /// The default bounds with the given intervals (side, height, elevation), checked.
+    fn checked(p: &Params, set: &[(StrikeVariable, f64, f64)]) -> Result<Bounds, PlanError> {
+        let mut b = Bounds::default_for(p);
+        for &(v, lo, hi) in set {
+            b.set(v, Interval { lo, hi });
+        }
+        b.check(p).map(|()| b)
+    }
+
+    #[test]
+    fn offset_bounds_are_the_engines_at_the_elevations_allowed() {
+        use StrikeVariable::{Elevation, Height, Side};
+        let p = Params::default();
+        // A level cue: the axis within miscue_limit (R + r) = 18.1 mm of the centre (issue 21:
+        // the bounds said 13.1 mm, miscue_limit R, which is where the contact lies, not the axis).
+        assert!(checked(&p, &[(Side, -0.018, 0.018), (Height, -0.018, 0.018)]).is_ok());
+        let e = checked(&p, &[(Height, 0.0, 0.019)])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("18.1 mm"), "{e}");
+        // Issue 21's massé, a 40 mm height offset at 1.2 rad, is within them.
+        assert!(checked(&p, &[(Elevation, 0.0, 1.2), (Height, 0.0, 0.04)]).is_ok());
+        assert!(checked(&p, &[(Elevation, 0.0, 1.2), (Height, 0.0, 0.051)]).is_err());
+        // The limits say what the engine does: just inside, a strike; just beyond, a miscue.
+        let ball = BallState::at_rest(1.0, 0.9, p.ball_radius);
+        let limit = p.miscue_limit * (p.ball_radius + p.cue_tip_radius) / 1.2f64.cos();
+        for (k, ok) in [(0.999, true), (1.001, false)] {
+            let c = Cue {
+                speed: 2.0,
+                aim: 0.0,
+                offset: [0.0, k * limit],
+                elevation: 1.2,
+            };
+            assert_eq!(cue::strike(&ball, &c, &p).is_ok(), ok, "{k}");
+        }
     }
 }

@@ -224,6 +224,11 @@ pub fn build_keyed<X>(spec: SceneFile<X>, file: &str) -> Result<(Scene, Vec<Stri
             offset: c.offset.0,
             elevation: c.elevation,
         };
+        // The ball's own motion is checked first: a strike cannot make a bad start good, and
+        // the cue is not to blame for it.
+        if let Some((field, reason)) = snooker_engine::sim::setup::motion_error(&balls[i], r) {
+            return Err(fail(&format!("{}.{field}", keys[i]), reason));
+        }
         let before = balls[i].state;
         let s = balls[i]
             .strike(&cue, &params)

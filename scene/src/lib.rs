@@ -290,4 +290,22 @@ mod tests {
         // The same strike with the thesis's cue is a shot.
         assert!(crate::parse(&format!("{BALL}{cue}"), "s.toml").is_ok());
     }
+
+    #[test]
+    fn a_struck_ball_whose_own_motion_is_beyond_any_shot_is_named() {
+        // Issue 21: a ball given a spin beyond the limit and also struck was reported as
+        // `cue.speed: ... strike more slowly or with a lighter cue`: the ball's own key is at
+        // fault, whatever the strike.
+        let cue = "[cue]\nball = \"b\"\nspeed = 0.5\naim = 0.0\n";
+        for (extra, key) in [
+            ("spin = [0.0, 0.0, 4000.0]\n", "balls[1].spin"),
+            ("vel = [31.0, 0.0, 0.0]\n", "balls[1].vel"),
+        ] {
+            let text = format!("{BALL}[[balls]]\nid = \"b\"\npos = [1.5, 0.5]\n{extra}{cue}");
+            let e = err(&text);
+            assert_eq!(e.key, key, "{e}");
+            assert!(e.reason.contains("beyond any shot"), "{e}");
+            assert!(!e.reason.contains("cue"), "{e}");
+        }
+    }
 }

@@ -6,7 +6,7 @@
 //! one). A ball whose lowest point is above the nose when its centre crosses the nose line
 //! clears the cushion and leaves the table.
 
-use super::roots::{entries, first_entry, first_line_contact, ring_entries};
+use super::roots::{entries, first_entry, line_contacts, ring_entries};
 use super::{TOUCH_TOL, VERIFY_TOL};
 use crate::motion::Path;
 use crate::table::{Cushion, Jaw};
@@ -19,6 +19,14 @@ pub struct NoseEdge {
     pub height: f64,
     /// Ball radius, m.
     pub radius: f64,
+}
+
+impl NoseEdge {
+    /// Whether a ball centred at height `z` has its lowest point at or above the nose (within
+    /// the detection's tolerance): it clears a cushion's nose, a jaw and a pocket's back.
+    pub fn cleared_at(&self, z: f64) -> bool {
+        z - self.radius >= self.height - VERIFY_TOL
+    }
 }
 
 /// True when the plan point `at` lies along `cushion` (within its length).
@@ -54,9 +62,10 @@ pub fn nose_time_in_air(
 /// of `cushion` (within its length) with its lowest point above the nose: it clears the
 /// cushion and leaves the table.
 pub fn over_time(path: &Path, cushion: &Cushion, edge: NoseEdge, window: f64) -> Option<f64> {
-    let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, 0.0, window)?;
-    let clear = path.at(t).z - edge.radius >= edge.height - VERIFY_TOL;
-    (clear && along(cushion, at)).then_some(t)
+    let plan = path.plan();
+    let (t, _) = line_contacts(&plan, cushion.start, cushion.normal, 0.0, window)
+        .find(|&(_, at)| along(cushion, at))?;
+    edge.cleared_at(path.at(t).z).then_some(t)
 }
 
 /// First time in [0, window] at which a ball in the air on `path` touches the rounded edge of
@@ -75,12 +84,29 @@ pub fn jaw_time_in_air(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> O
     }
 }
 
+/// First time in [0, window] at which a ball in the air on `path` passes over the rounded
+/// edge of `jaw` with its lowest point above the nose: its centre enters the jaw's arc in
+/// plan (the cushion's body, behind the nose and the facing the arc joins) and it clears the
+/// cushion there, leaving the table. A ball entering it lower has touched the edge before.
+/// A sharp jaw (radius 0) is the meeting point of the nose and the facing, which
+/// [`over_time`] covers.
+pub fn over_jaw_time(path: &Path, jaw: &Jaw, edge: NoseEdge, window: f64) -> Option<f64> {
+    if jaw.radius <= 0.0 {
+        return None;
+    }
+    let mut rel = path.plan();
+    rel.c -= jaw.centre;
+    let t = first_entry(&rel, jaw.radius, window)?;
+    edge.cleared_at(path.at(t).z).then_some(t)
+}
+
 /// First time in [0, window] at which `path` touches the straight `cushion` within its
 /// length, approaching it; `contact` is R cos(theta).
 pub fn nose_time(path: &Path, cushion: &Cushion, contact: f64, window: f64) -> Option<f64> {
-    let (t, at) = first_line_contact(&path.plan(), cushion.start, cushion.normal, contact, window)?;
-    let along = (at - cushion.start).dot(&cushion.direction());
-    (along >= -TOUCH_TOL && along <= cushion.length() + TOUCH_TOL).then_some(t)
+    let plan = path.plan();
+    line_contacts(&plan, cushion.start, cushion.normal, contact, window)
+        .find(|&(_, at)| along(cushion, at))
+        .map(|(t, _)| t)
 }
 
 /// First time in [0, window] at which `path` touches the `jaw` arc, approaching it.

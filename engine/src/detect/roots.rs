@@ -25,16 +25,48 @@ pub fn first_entry(rel: &Path, rho: f64, window: f64) -> Option<f64> {
 }
 
 /// Every time in [0, window], in order, at which the relative path `rel` enters the sphere of
-/// radius `rho` while approaching it, as [`first_entry`] finds the first.
+/// radius `rho` while approaching it, as [`first_entry`] finds the first. A path touching now
+/// gives 0 first; the later entries are searched only if they are asked for (a caller may
+/// refuse the first, as a nose edge's does where the touch is beyond the nose's end).
 pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
     let (a, b, c) = (rel.a, rel.b, rel.c);
     let dist0 = c.norm();
     let now = dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0;
     let rho = rho - SKIN;
-    let searched = !(now
-        || window.is_nan()
+    let later = std::iter::once(()).flat_map(move |()| {
+        let searched = !(window.is_nan()
+            || window <= 0.0
+            || dist0 - rho > rel.reach(window)
+            || never_within(rel, rho, window.min(MAX_WINDOW)));
+        let roots = if searched {
+            let quartic = Poly::new([
+                c.dot(&c) - rho * rho,
+                2.0 * b.dot(&c),
+                b.dot(&b) + 2.0 * a.dot(&c),
+                2.0 * a.dot(&b),
+                a.dot(&a),
+            ]);
+            // A law that never ends (no friction) is searched over a bounded, still
+            // astronomical, span.
+            quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+        } else {
+            Default::default()
+        };
+        roots.into_iter().filter(move |&t| {
+            let d = rel.at(t);
+            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+        })
+    });
+    now.then_some(0.0).into_iter().chain(later)
+}
+
+/// Every time in [0, window], in order, at which the relative path `rel` leaves the sphere of
+/// radius `rho` around the origin (moving away from it): the crossings [`entries`] leaves out.
+pub fn exits(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
+    let (a, b, c) = (rel.a, rel.b, rel.c);
+    let searched = !(window.is_nan()
         || window <= 0.0
-        || dist0 - rho > rel.reach(window)
+        || rho - c.norm() > rel.reach(window)
         || never_within(rel, rho, window.min(MAX_WINDOW)));
     let roots = if searched {
         let quartic = Poly::new([
@@ -44,18 +76,14 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
             2.0 * a.dot(&b),
             a.dot(&a),
         ]);
-        // A law that never ends (no friction) is searched over a bounded, still astronomical,
-        // span.
         quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
     } else {
         Default::default()
     };
-    now.then_some(0.0)
-        .into_iter()
-        .chain(roots.into_iter().filter(move |&t| {
-            let d = rel.at(t);
-            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
-        }))
+    roots.into_iter().filter(move |&t| {
+        let d = rel.at(t);
+        d.dot(&rel.velocity(t)) > 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+    })
 }
 
 /// True when the path `rel` provably stays farther than `rho` from the origin over [0, `window`]
@@ -160,26 +188,42 @@ pub fn first_line_contact(
     dist: f64,
     window: f64,
 ) -> Option<(f64, Vec3)> {
+    line_contacts(path, point, normal, dist, window).next()
+}
+
+/// Every time in [0, window], in order, at which `path` comes within `dist` of the line through
+/// `point` with unit normal `normal` (plan), from the normal's side and approaching, as
+/// [`first_line_contact`] finds the first (a path touching now gives 0 first; a caller may
+/// refuse it, as a nose's does beyond its end, and take a later one).
+pub fn line_contacts(
+    path: &Path,
+    point: Vec3,
+    normal: Vec3,
+    dist: f64,
+    window: f64,
+) -> impl Iterator<Item = (f64, Vec3)> + '_ {
     let s1 = normal.dot(&path.b);
     let s2 = normal.dot(&path.a);
-    if (normal.dot(&(path.c - point)) - dist).abs() <= TOUCH_TOL && s1 < 0.0 {
-        return Some((0.0, path.c));
-    }
+    let now = (normal.dot(&(path.c - point)) - dist).abs() <= TOUCH_TOL && s1 < 0.0;
     let dist = dist - SKIN;
     let s0 = normal.dot(&(path.c - point)) - dist;
-    if window.is_nan() || window <= 0.0 {
-        return None;
-    }
-    Quadratic::new([s0, s1, s2])
-        .roots()
+    let roots = if window.is_nan() || window <= 0.0 {
+        Default::default()
+    } else {
+        Quadratic::new([s0, s1, s2]).roots()
+    };
+    let later = roots
         .into_iter()
-        .filter(|&t| (0.0..=window).contains(&t))
-        .find(|&t| {
+        .filter(move |&t| {
+            if !(0.0..=window).contains(&t) {
+                return false;
+            }
             let approaching = s1 + 2.0 * s2 * t < 0.0;
             let p = path.at(t);
             approaching && (normal.dot(&(p - point)) - dist).abs() <= VERIFY_TOL
         })
-        .map(|t| (t, path.at(t)))
+        .map(move |t| (t, path.at(t)));
+    now.then_some((0.0, path.c)).into_iter().chain(later)
 }
 
 #[cfg(test)]

@@ -9,12 +9,15 @@
 //! at exactly that speed. A sustained contact thus becomes a steady train of micro-collisions
 //! whose impulses average to the contact force, the bodies never more than a few micrometres
 //! apart. The price is bounded: the push adds 1/2 m_eff (MIN_SEPARATION^2 - s^2) to an impact
-//! that left the bodies separating at s >= 0, at most 1/2 m_eff MIN_SEPARATION^2 — 3.5e-8 J
-//! for two balls (m_eff = M/2), 7.0e-8 J for a ball against a cushion (m_eff = M) — which the
+//! that left the bodies separating at s >= 0, at most 1/2 m_eff MIN_SEPARATION^2 — for the
+//! thesis's ball mass, 3.5e-8 J for two balls (m_eff = M/2), 7.0e-8 J for a ball against a
+//! cushion (m_eff = M); it scales with the mass of a scene's balls — which the
 //! cloth's friction then removes. The impact itself is solved with the model's own
 //! restitution, so its energy balance is the model's.
 
 use crate::ball::{BallState, Vec3};
+use crate::motion::ON_CLOTH;
+use crate::params::Params;
 
 /// Smallest separation speed after an impact, m/s.
 pub const MIN_SEPARATION: f64 = 1e-3;
@@ -27,6 +30,29 @@ pub const MIN_SEPARATION: f64 = 1e-3;
 /// cushion that it meets at 4e-17 m/s (found by the fuzz harness, a ball frozen to a cushion
 /// and struck along it) has slips 1e16 times that speed.
 pub const GRAZING_APPROACH: f64 = 1e-7;
+
+/// An approach at most this (m/s) is a micro-collision of a resting contact, not a new impact:
+/// it lifts no ball off the cloth. A ball pressed into another by its own acceleration parts
+/// from it at [`MIN_SEPARATION`] and comes back at about that speed (the pressing acceleration
+/// turns it round as it sent it off), again and again: the train stands for a sustained contact
+/// force N, whose friction could lift a ball only if mu_bb N exceeded its weight, and the cloth's
+/// friction, which presses the balls together, cannot do that. The hop the impact model gives
+/// such a touch (thesis §6.1.6: the ball-ball friction's vertical pull on the ball it does not
+/// press down) is at most mu_bb (1 + e) / 2 of the approach, 2 mm/s at most, rising less than
+/// 0.2 µm (at g = 9.81 m/s²) for less than 0.4 ms: below the cloth's texture and anything
+/// measured, and as many events again (a lift-off and a landing) for each micro-collision.
+/// Twice the floor, so that a train's approaches, a little above it when the accelerations
+/// change between touches, count too.
+pub const RESTING_APPROACH: f64 = 2.0 * MIN_SEPARATION;
+
+/// Keeps on the cloth a ball that was on it before a resting contact's micro-collision
+/// ([`RESTING_APPROACH`]): its upward velocity is taken by the cloth, as at a landing (thesis
+/// §6.1.6: the cloth's vertical percussion; its friction percussion neglected).
+pub fn stay_on_cloth(after: &mut BallState, before: &BallState, p: &Params) {
+    if before.pos.z <= p.ball_radius + ON_CLOTH && after.vel.z > 0.0 {
+        after.vel.z = 0.0;
+    }
+}
 
 /// Pushes balls `a` and `b` (equal masses) apart along `n`, the unit vector from `a`'s centre
 /// to `b`'s, so that they separate at [`MIN_SEPARATION`] at least.

@@ -235,10 +235,32 @@ impl Sim<'_> {
                 }
             }
             for (k, j) in table.jaws.iter().enumerate() {
-                if reach.near_point(j.centre, j.radius + edge.radius)
-                    && let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window)
-                {
+                if !reach.near_point(j.centre, j.radius + edge.radius) {
+                    continue;
+                }
+                if let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window) {
                     found.push((t, Candidate::Jaw { jaw: k }));
+                }
+                if let Some(t) = cushion::over_jaw_time(&path, j, edge, window) {
+                    found.push((t, Candidate::OverJaw { jaw: k }));
+                }
+            }
+            // Over a pocket's opening: drops in, or clears the pocket's back
+            // (detect/pocket.rs).
+            for (k, pk) in table.pockets.iter().enumerate() {
+                if !reach.near_point(pk.centre, pk.radius) {
+                    continue;
+                }
+                if let Some(t) = detect::pocket::drop_time_in_air(&path, pk, edge, window) {
+                    found.push((t, Candidate::Pocket { pocket: k }));
+                }
+                if let Some((t, clears)) = detect::pocket::far_edge_time(&path, pk, edge, window) {
+                    let kind = if clears {
+                        Candidate::OverPocket { pocket: k }
+                    } else {
+                        Candidate::Pocket { pocket: k }
+                    };
+                    found.push((t, kind));
                 }
             }
         } else {
@@ -257,12 +279,12 @@ impl Sim<'_> {
                     found.push((t, Candidate::Jaw { jaw: k }));
                 }
             }
-        }
-        for (k, pk) in table.pockets.iter().enumerate() {
-            if reach.near_point(pk.centre, pk.radius)
-                && let Some(t) = detect::pocket::capture_time(&path, pk, window)
-            {
-                found.push((t, Candidate::Pocket { pocket: k }));
+            for (k, pk) in table.pockets.iter().enumerate() {
+                if reach.near_point(pk.centre, pk.radius)
+                    && let Some(t) = detect::pocket::capture_time(&path, pk, window)
+                {
+                    found.push((t, Candidate::Pocket { pocket: k }));
+                }
             }
         }
         for (t, kind) in found {
@@ -467,6 +489,10 @@ impl Sim<'_> {
                         .map_err(|err| self.impact_error(&[e.a, other], err))?
                 };
                 separation::separate_balls(&mut a2, &mut b2, n);
+                if approach <= separation::RESTING_APPROACH {
+                    separation::stay_on_cloth(&mut a2, &a, &p);
+                    separation::stay_on_cloth(&mut b2, &b, &p);
+                }
                 Resolved {
                     kind: EventKind::BallBall,
                     balls: vec![e.a, other],
@@ -491,6 +517,13 @@ impl Sim<'_> {
             }
             Candidate::OverCushion { cushion } => {
                 self.out_of_play(e.a, Motion::OffTable, &table.cushions[cushion].name)
+            }
+            Candidate::OverJaw { jaw } => {
+                self.out_of_play(e.a, Motion::OffTable, &table.jaws[jaw].name)
+            }
+            Candidate::OverPocket { pocket } => {
+                let back = format!("{}/back", table.pockets[pocket].name);
+                self.out_of_play(e.a, Motion::OffTable, &back)
             }
             Candidate::Transition => {
                 let s = self.current(e.a);

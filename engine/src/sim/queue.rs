@@ -35,6 +35,18 @@ pub enum Candidate {
         /// Index into `Table::cushions`.
         cushion: usize,
     },
+    /// The ball, in the air, passes over a jaw's rounded edge with its lowest point above it:
+    /// it leaves the table.
+    OverJaw {
+        /// Index into `Table::jaws`.
+        jaw: usize,
+    },
+    /// The ball, in the air over a pocket's fall, reaches the far half of the fall's edge with
+    /// its lowest point above the nose: it clears the pocket's back and leaves the table.
+    OverPocket {
+        /// Index into `Table::pockets`.
+        pocket: usize,
+    },
     /// The ball's motion law ends.
     Transition,
 }
@@ -57,7 +69,9 @@ impl Candidate {
             Candidate::Jaw { jaw } => (2, None, jaw),
             Candidate::Pocket { pocket } => (3, None, pocket),
             Candidate::OverCushion { cushion } => (4, None, cushion),
-            Candidate::Transition => (5, None, 0),
+            Candidate::OverJaw { jaw } => (5, None, jaw),
+            Candidate::OverPocket { pocket } => (6, None, pocket),
+            Candidate::Transition => (7, None, 0),
         }
     }
 }

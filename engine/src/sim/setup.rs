@@ -90,6 +90,38 @@ impl std::fmt::Display for SetupError {
 
 impl std::error::Error for SetupError {}
 
+/// Why ball `b` (radius `r`) cannot start with its velocity and spin, if it cannot: the field
+/// at fault ("vel" or "spin") and the reason. A speed above [`MAX_BALL_SPEED`] or a spin whose
+/// surface speed is above [`MAX_SPIN_SPEED`] is beyond any shot. [`Setup::validate`] checks
+/// it for every ball; a scene checks it for a ball before striking it, so that a ball's own
+/// motion is not blamed on the cue.
+pub fn motion_error(b: &Ball, r: f64) -> Option<(&'static str, String)> {
+    let speed = b.state.vel.norm();
+    if speed > MAX_BALL_SPEED {
+        return Some((
+            "vel",
+            format!(
+                "ball \"{}\": a speed of {speed} m/s is beyond any shot (at most \
+                 {MAX_BALL_SPEED} m/s)",
+                b.id
+            ),
+        ));
+    }
+    let surface = b.state.spin.norm() * r;
+    if surface > MAX_SPIN_SPEED {
+        return Some((
+            "spin",
+            format!(
+                "ball \"{}\": a spin of {} rad/s (surface speed R|w| = {surface} m/s) is \
+                 beyond any shot (R|w| at most {MAX_SPIN_SPEED} m/s)",
+                b.id,
+                b.state.spin.norm()
+            ),
+        ));
+    }
+    None
+}
+
 impl Setup {
     /// Checks parameters and the starting positions: finite numbers, unique ids, every ball on
     /// the cloth and clear of the cushions, no two balls overlapping (touching is allowed).
@@ -120,28 +152,8 @@ impl Setup {
                     ));
                 }
             }
-            let speed = b.state.vel.norm();
-            if speed > MAX_BALL_SPEED {
-                return Err(bad(
-                    "vel",
-                    format!(
-                        "ball \"{}\": a speed of {speed} m/s is beyond any shot (at most \
-                         {MAX_BALL_SPEED} m/s)",
-                        b.id
-                    ),
-                ));
-            }
-            let surface = b.state.spin.norm() * r;
-            if surface > MAX_SPIN_SPEED {
-                return Err(bad(
-                    "spin",
-                    format!(
-                        "ball \"{}\": a spin of {} rad/s (surface speed R|w| = {surface} m/s) is \
-                         beyond any shot (R|w| at most {MAX_SPIN_SPEED} m/s)",
-                        b.id,
-                        b.state.spin.norm()
-                    ),
-                ));
+            if let Some((field, reason)) = motion_error(b, r) {
+                return Err(bad(field, reason));
             }
             if self.balls[..i].iter().any(|o| o.id == b.id) {
                 return Err(bad("id", format!("ball id \"{}\" is used twice", b.id)));

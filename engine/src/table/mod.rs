@@ -163,9 +163,10 @@ impl Table {
         })
     }
 
-    /// True when a ball centre at `pos` (plan) is on the playing surface or in a pocket's
-    /// mouth (within one mouth width of its middle), up to `tol` metres: where a ball in play
-    /// may be found during a shot.
+    /// True when a ball centre at `pos` (plan) is on the playing surface, `contact` or more
+    /// inside the nose lines, or in a pocket's opening (within the mouth's width, and the fall's
+    /// depth behind it, of the mouth's middle), up to `tol` metres: where a ball in play may be
+    /// found during a shot.
     pub fn holds(&self, pos: Vec3, contact: f64, tol: f64) -> bool {
         if self.kind == TableKind::Open {
             return true;
@@ -174,10 +175,11 @@ impl Table {
             && pos.x <= self.length - contact + tol
             && pos.y >= contact - tol
             && pos.y <= self.width - contact + tol;
+        let plan = Vec3::new(pos.x, pos.y, 0.0);
         inside
-            || self
-                .pockets
-                .iter()
-                .any(|p| (pos - p.mouth).norm() <= p.mouth_width + tol)
+            || self.pockets.iter().any(|p| {
+                let deep = (p.centre - p.mouth).norm() - p.radius;
+                (plan - p.mouth).norm() <= p.mouth_width + deep.max(0.0) + tol
+            })
     }
 }
