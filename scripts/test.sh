@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The project's test command: formatting, lints, every test of the workspace optimised (physics
 # in a debug build is ~80x slower; the `ci` profile of Cargo.toml: release with lighter
-# dependencies), then 10,000 fuzz scenes, then the Python package's tests
-# (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, and a TrueType font for
+# dependencies), then 10,000 fuzz scenes, then the shot lab in headless Chromium
+# (scripts/browser_tests.sh: Debian's chromium, npm's playwright-core), then the Python
+# package's tests (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, node and
+# npm, and a TrueType font for
 # the plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
 # Then the book (docs/, mdBook: installed with cargo if missing) is built and its links checked.
 # Each part prints its time when it ends (docs/testing.md quotes them).
@@ -56,6 +58,8 @@ part book book
 # other features and build the engine, or rerun's dependencies, again; the results are the
 # same bits either way).
 part fuzz "${CARGO_TARGET_DIR:-target}/ci/snooker-fuzz" --scenes 10000
+# The shot lab's page in a real browser (server/browser/): the binary `cargo test` built.
+part browser scripts/browser_tests.sh
 # The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
 part Python scripts/python_tests.sh
 echo "== test.sh: all parts took $((SECONDS - start_all)) s" >&2

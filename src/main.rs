@@ -2,7 +2,9 @@
 //! against rapier, and find and name discrepancies with measurements.
 
 use clap::{Parser, Subcommand};
-use snooker::cmd::{self, batch, discrepancy, impact, plan, referee, simulate, synth, validate};
+use snooker::cmd::{
+    self, batch, discrepancy, impact, plan, referee, serve, simulate, synth, validate,
+};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -40,6 +42,9 @@ enum Command {
     /// Referee a frame of snooker: simulate the frame's strike, judge it by the rules (WPBSA),
     /// write the verdict and the next frame; several frames play a sequence of strokes.
     Referee(referee::Args),
+    /// The shot lab: a local web page to set up a position, strike, plan a shot and play a
+    /// frame (bound to the loopback address unless --host says otherwise).
+    Serve(serve::Args),
 }
 
 fn main() -> ExitCode {
@@ -73,5 +78,6 @@ fn main() -> ExitCode {
         Command::Plan(a) => plan::run(a),
         Command::Batch(a) => batch::run(a),
         Command::Referee(a) => referee::run(a),
+        Command::Serve(a) => serve::run(a),
     }
 }

@@ -1,7 +1,8 @@
 //! An event-driven snooker physics engine.
 //!
 //! Between events every ball follows a closed-form law ([`motion`]: sliding, rolling,
-//! spinning, airborne); [`detect`] finds the next event exactly (ball-ball, cushion, jaw,
+//! spinning, airborne); the event detection (internal; its tolerances are [`TOUCH_TOL`],
+//! [`VERIFY_TOL`] and [`SKIN`]) finds the next event exactly (ball-ball, cushion, jaw,
 //! pocket, end of a law); [`impact`] resolves impacts with a model chosen per scene; [`sim`]
 //! runs the loop and records a [`sim::Shot`] that can be evaluated at any time (positions,
 //! velocities and, by [`sim::orientation`], each ball's orientation).
@@ -48,15 +49,17 @@
 pub mod audit;
 pub mod ball;
 pub mod cue;
-pub mod detect;
+pub(crate) mod detect;
 pub mod impact;
 pub mod motion;
 pub mod params;
+pub mod rng;
 pub mod sim;
 pub mod table;
 
 pub use ball::{Ball, BallKind, BallState, Motion, Vec3};
 pub use cue::{Cue, CueError, Strike};
+pub use detect::{SKIN, TOUCH_TOL, VERIFY_TOL};
 pub use impact::{BallBallModel, CushionModel, Models};
 pub use params::Params;
 pub use sim::{Ending, Event, EventKind, Setup, SetupError, Shot, SimError, SimOptions, simulate};

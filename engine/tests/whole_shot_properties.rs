@@ -5,10 +5,10 @@
 use proptest::prelude::*;
 use snooker_engine::audit;
 use snooker_engine::cue::{self, Cue};
-use snooker_engine::detect::{SKIN, VERIFY_TOL};
 use snooker_engine::{
     Ball, BallKind, BallState, Models, Motion, Params, Setup, Shot, SimOptions, Table, simulate,
 };
+use snooker_engine::{SKIN, VERIFY_TOL};
 
 /// Grid cells (columns x rows) over the playing area in which balls are placed, one per cell at
 /// most, each cell wide enough for a ball anywhere in it never to overlap a neighbour's.

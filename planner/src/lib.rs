@@ -24,6 +24,7 @@
 //! ```
 
 pub mod aim;
+pub mod cancel;
 pub mod problem;
 pub mod reachable;
 pub mod robust;
@@ -31,6 +32,7 @@ pub mod scene_out;
 pub mod search;
 pub mod trial;
 
+pub use cancel::Cancel;
 pub use problem::{
     Bounds, Interval, Noise, NoiseComponent, PlanError, Problem, Request, RequestField,
     StrikeVariable,

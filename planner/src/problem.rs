@@ -1,6 +1,7 @@
 //! What is asked of the planner (the ball to pot, the pocket, the cue ball's target, the
 //! limits of the search, the execution noise), checked against the scene once, up front.
 
+use crate::cancel::Cancel;
 use snooker_engine::cue::{MAX_CUE_SPEED, MAX_ELEVATION};
 use snooker_engine::{Params, Setup, SimOptions, Vec3};
 use snooker_scene::Scene;
@@ -399,6 +400,7 @@ pub struct Problem {
     /// The cue ball's target, m (z = R).
     pub target: Vec3,
     shots: AtomicU64,
+    cancel: Cancel,
 }
 
 impl Problem {
@@ -509,6 +511,7 @@ impl Problem {
             pocket,
             target,
             shots: AtomicU64::new(0),
+            cancel: Cancel::new(),
         })
     }
 
@@ -519,6 +522,18 @@ impl Problem {
 
     pub(crate) fn count_shot(&self) {
         self.shots.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// The problem watching `cancel`: once it is raised no further shot is simulated, and the
+    /// plan (an error or a partial answer) is void.
+    pub fn with_cancel(mut self, cancel: Cancel) -> Problem {
+        self.cancel = cancel;
+        self
+    }
+
+    /// True once the problem's cancellation flag is raised.
+    pub fn cancelled(&self) -> bool {
+        self.cancel.is_cancelled()
     }
 }
 

@@ -63,8 +63,11 @@ pub fn angle(a: Vec3, b: Vec3) -> f64 {
 
 impl Problem {
     /// Strikes the cue ball with `cue` and simulates the shot; None when the strike is not
-    /// possible (a miscue) or the shot does not simulate.
+    /// possible (a miscue), the shot does not simulate, or the plan is cancelled.
     pub fn trial(&self, cue: &Cue) -> Option<Trial> {
+        if self.cancelled() {
+            return None;
+        }
         let mut setup = self.setup.clone();
         setup.balls[self.cue].strike(cue, &self.setup.params).ok()?;
         self.count_shot();

@@ -4,7 +4,7 @@
 //! within the cap of strokes, strokes, fouls by reason, free balls, respots, and the time spent
 //! simulating and judging. `cargo run --profile ci -p snooker-rules --example random_frames [FRAMES] [CAP]`.
 
-use snooker_engine::impact::sweep::Rng;
+use snooker_engine::rng::Rng;
 use snooker_engine::{Cue, Vec3, simulate};
 use snooker_rules::{Frame, Next, On};
 use std::collections::BTreeMap;

@@ -6,7 +6,7 @@ use crate::colour::Colour;
 use crate::frame::Frame;
 use crate::respot;
 use crate::state::{FrameState, On};
-use snooker_engine::impact::sweep::Rng;
+use snooker_engine::rng::Rng;
 use snooker_engine::table::layout;
 use snooker_engine::{Ball, BallKind, BallState, Models, Params, SimOptions, SnookerDims, Table};
 

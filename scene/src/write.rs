@@ -45,7 +45,7 @@ pub fn with_cue(scene_text: &str, ball: &str, cue: &Cue) -> Result<String, Write
 #[cfg(test)]
 mod tests {
     use super::*;
-    use snooker_engine::impact::sweep::Rng;
+    use snooker_engine::rng::Rng;
 
     #[test]
     fn a_strike_written_again_reads_back_to_the_bit() {

@@ -23,6 +23,7 @@ pub mod discrepancy;
 pub mod impact;
 pub mod plan;
 pub mod referee;
+pub mod serve;
 pub mod simulate;
 pub mod spec;
 pub mod synth;

@@ -178,6 +178,7 @@ pub fn ring_entries(
     )
 }
 
+#[cfg(test)]
 /// The first time in [0, window] at which `path` comes within `dist` of the line through
 /// `point` with unit normal `normal` (plan), from the normal's side and approaching.
 /// Returns the time and the point of the path there.

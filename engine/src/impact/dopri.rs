@@ -57,6 +57,7 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
+#[cfg(test)]
 /// One step of size `h` from `y` whose slope is `k1`: the fifth-order solution, the error
 /// estimate of the embedded fourth-order one, and the seven stage slopes (the last is the
 /// slope at the new point).
@@ -170,6 +171,7 @@ impl<const N: usize> Dense<N> {
     }
 }
 
+#[cfg(test)]
 /// The state at fraction `theta` of a step from `y0` to `y1` of size `h` with stages `k`
 /// (the continuous extension, accurate to the order of the embedded method).
 pub fn dense<const N: usize>(
@@ -199,6 +201,7 @@ pub trait ErrorMeasure<const N: usize> {
     fn measure(&self, y0: &[f64; N], y1: &[f64; N], err: &[f64; N]) -> f64;
 }
 
+#[cfg(test)]
 /// The usual measure: the RMS, over `dim` components (more than the state's when it stands
 /// for a larger system whose other components are constant), of the error scaled by
 /// `tol (1 + |y|)`.
@@ -210,6 +213,7 @@ pub struct Mixed {
     pub dim: usize,
 }
 
+#[cfg(test)]
 impl<const N: usize> ErrorMeasure<N> for Mixed {
     fn measure(&self, y0: &[f64; N], y1: &[f64; N], err: &[f64; N]) -> f64 {
         (mixed_sum(y0, y1, err, self.tol) / self.dim as f64).sqrt()

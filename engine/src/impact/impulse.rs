@@ -27,10 +27,11 @@
 //! of W(P_c) that depends on its size (`restitution`): with rate-independent friction the
 //! normal compliance changes nothing else in impulse space (Stronge 2000, §2.3 and ch. 5).
 //!
-//! The equations are integrated adaptively ([`super::dopri`]) in units of the approach speed V,
-//! the ball mass M and radius R; every switch (end of compression, a slip stopping, turning or
-//! becoming established, a ball pressing or lifting, the end of the impact) is an event
-//! located on the integrator's continuous extension.
+//! The equations are integrated adaptively (an internal Dormand-Prince 5(4) integrator,
+//! `dopri.rs`) in units of the approach speed V, the ball mass M and radius R; every switch
+//! (end of compression, a slip stopping, turning or becoming established, a ball pressing or
+//! lifting, the end of the impact) is an event located on the integrator's continuous
+//! extension.
 //!
 //! Where each part lives:
 //! - `problem`: the bodies, their contact and velocities, the outcome (data only);

@@ -2,7 +2,7 @@
 //! (1 = rolling): the cue ball moving along +x into a resting object ball at a cut angle
 //! (thesis §6.1.4.1, figs. 6.14, 6.15), and a ball meeting a cushion at an angle of incidence
 //! (thesis §6.2.4, Mathavan et al. 2010). Used by `snooker impact`, the convergence sweeps
-//! ([`super::sweep`]) and the impact benches.
+//! (`impact::sweep`, behind the `sweep` feature) and the impact benches.
 
 use crate::ball::{BallState, Motion, Vec3};
 use crate::params::Params;

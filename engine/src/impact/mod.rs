@@ -3,10 +3,11 @@
 
 pub mod ball_ball;
 pub mod cushion;
-pub mod dopri;
+pub(crate) mod dopri;
 pub mod impulse;
 pub mod incoming;
 pub mod separation;
+#[cfg(feature = "sweep")]
 pub mod sweep;
 
 use serde::{Deserialize, Serialize};

@@ -10,37 +10,13 @@ use super::impulse::{Impact, Kinematics};
 use super::incoming;
 use crate::ball::Vec3;
 use crate::params::Params;
+pub use crate::rng::Rng;
 
 /// Seed of the sweeps (the test's and the example's: the same impacts).
 pub const SEED: u64 = 0x1234_5678_9abc_def1;
 
 /// Tolerance of the converged solutions the others are compared with.
 pub const CONVERGED: f64 = 1e-13;
-
-/// A small deterministic generator of uniform numbers (Marsaglia's xorshift64, 2003): the
-/// same sequence on every machine, so that a sweep's impacts are the same everywhere. Seed it
-/// with any non-zero value.
-#[derive(Clone, Debug)]
-pub struct Rng(pub u64);
-
-impl Rng {
-    /// Uniform in [a, b).
-    pub fn uniform(&mut self, a: f64, b: f64) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        a + (b - a) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
-    }
-
-    /// A vector with components uniform in [-a, a).
-    pub fn vec(&mut self, a: f64) -> Vec3 {
-        Vec3::new(
-            self.uniform(-a, a),
-            self.uniform(-a, a),
-            self.uniform(-a, a),
-        )
-    }
-}
 
 /// One impact: what it is, its contact problem and velocities, and its speed V (m/s).
 pub struct RandomImpact {

@@ -10,7 +10,7 @@
 pub mod error;
 pub mod event;
 pub mod orientation;
-pub mod queue;
+pub(crate) mod queue;
 pub mod setup;
 pub mod shot;
 

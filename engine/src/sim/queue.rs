@@ -137,14 +137,4 @@ impl Queue {
     pub fn pop(&mut self) -> Option<Entry> {
         self.heap.pop().map(|Reverse(e)| e)
     }
-
-    /// Number of queued candidates (stale ones included).
-    pub fn len(&self) -> usize {
-        self.heap.len()
-    }
-
-    /// True when nothing is queued.
-    pub fn is_empty(&self) -> bool {
-        self.heap.is_empty()
-    }
 }

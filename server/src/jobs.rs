@@ -1,0 +1,285 @@
+//! Long work (a plan, the player thinking) as jobs: started at once with an id, run when one
+//! of the server's few heavy slots is free (a semaphore), watched for progress (shots
+//! simulated so far), cancelled on request or when it outlives its wall time (a [`Cancel`]
+//! flag the planner checks before every shot), and kept a while for its result.
+
+use crate::error::ApiError;
+use crate::limits::Limits;
+use serde::Serialize;
+use serde_json::Value;
+use snooker_planner::Cancel;
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Instant;
+use tokio::sync::Semaphore;
+
+/// Where a job's progress is read: shots simulated so far.
+pub trait Progress: Send + Sync {
+    /// Shots simulated so far.
+    fn shots(&self) -> u64;
+}
+
+impl Progress for snooker_planner::Problem {
+    fn shots(&self) -> u64 {
+        snooker_planner::Problem::shots(self)
+    }
+}
+
+impl Progress for AtomicU64 {
+    fn shots(&self) -> u64 {
+        self.load(Ordering::Relaxed)
+    }
+}
+
+/// Where a job is.
+#[derive(Debug, Clone)]
+enum State {
+    Queued,
+    Running,
+    Done(Arc<Value>),
+    Failed(ApiError),
+    Cancelled(String),
+}
+
+/// One job.
+pub struct Job {
+    /// Its id.
+    pub id: u64,
+    /// What it does (`plan`, `play`).
+    pub kind: &'static str,
+    /// Its cancellation flag: the work checks it.
+    pub cancel: Cancel,
+    created: Instant,
+    started: Mutex<Option<Instant>>,
+    state: Mutex<State>,
+    progress: Mutex<Vec<Arc<dyn Progress>>>,
+    done_shots: AtomicU64,
+    note: Mutex<String>,
+    cancel_reason: Mutex<Option<String>>,
+}
+
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+impl Job {
+    /// Shots simulated so far by the work watched ([`Job::watch`]).
+    pub fn shots(&self) -> u64 {
+        self.done_shots.load(Ordering::Relaxed)
+            + lock(&self.progress).iter().map(|p| p.shots()).sum::<u64>()
+    }
+
+    /// Counts the shots of `p` in the job's progress until [`Job::unwatch`].
+    pub fn watch(&self, p: Arc<dyn Progress>) {
+        lock(&self.progress).push(p);
+    }
+
+    /// Stops watching the progress sources, keeping their counts.
+    pub fn unwatch(&self) {
+        let mut list = lock(&self.progress);
+        let n: u64 = list.iter().map(|p| p.shots()).sum();
+        self.done_shots.fetch_add(n, Ordering::Relaxed);
+        list.clear();
+    }
+
+    /// A line saying what the job is doing now.
+    pub fn set_note(&self, note: impl Into<String>) {
+        *lock(&self.note) = note.into();
+    }
+
+    /// Cancels the job, saying why.
+    pub fn cancel_with(&self, reason: &str) {
+        let mut r = lock(&self.cancel_reason);
+        if r.is_none() {
+            *r = Some(reason.to_string());
+        }
+        self.cancel.cancel();
+    }
+
+    fn finished(&self) -> bool {
+        matches!(
+            *lock(&self.state),
+            State::Done(_) | State::Failed(_) | State::Cancelled(_)
+        )
+    }
+
+    /// The job as the API reports it.
+    pub fn status(&self) -> JobStatus {
+        let state = lock(&self.state).clone();
+        let started = *lock(&self.started);
+        let (name, result, error, reason) = match state {
+            State::Queued => ("queued", None, None, None),
+            State::Running => ("running", None, None, None),
+            State::Done(v) => ("done", Some(v), None, None),
+            State::Failed(e) => ("failed", None, Some(e), None),
+            State::Cancelled(r) => ("cancelled", None, None, Some(r)),
+        };
+        JobStatus {
+            id: self.id,
+            kind: self.kind,
+            state: name,
+            shots: self.shots(),
+            note: lock(&self.note).clone(),
+            waited: started
+                .map_or(self.created.elapsed(), |s| s - self.created)
+                .as_secs_f64(),
+            elapsed: started.map_or(0.0, |s| s.elapsed().as_secs_f64()),
+            result,
+            error,
+            reason,
+        }
+    }
+}
+
+/// A job as the API reports it.
+#[derive(Debug, Clone, Serialize)]
+pub struct JobStatus {
+    /// Its id.
+    pub id: u64,
+    /// What it does.
+    pub kind: &'static str,
+    /// `queued`, `running`, `done`, `failed` or `cancelled`.
+    pub state: &'static str,
+    /// Shots simulated so far.
+    pub shots: u64,
+    /// What it is doing now.
+    pub note: String,
+    /// Time spent waiting for a slot, s.
+    pub waited: f64,
+    /// Time running, s.
+    pub elapsed: f64,
+    /// The answer, once done.
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "shared")]
+    pub result: Option<Arc<Value>>,
+    /// Why it failed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<ApiError>,
+    /// Why it was cancelled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// A kept result, written as the value it holds (shared, not copied, between polls).
+fn shared<S: serde::Serializer>(v: &Option<Arc<Value>>, s: S) -> Result<S::Ok, S::Error> {
+    v.as_deref().serialize(s)
+}
+
+/// The server's jobs.
+pub struct Jobs {
+    limits: Limits,
+    next: AtomicU64,
+    queued: AtomicUsize,
+    heavy: Arc<Semaphore>,
+    jobs: Mutex<BTreeMap<u64, Arc<Job>>>,
+}
+
+impl Jobs {
+    /// No jobs yet; `limits` says how many run at once, wait, and are kept.
+    pub fn new(limits: Limits) -> Jobs {
+        Jobs {
+            limits,
+            next: AtomicU64::new(1),
+            queued: AtomicUsize::new(0),
+            heavy: Arc::new(Semaphore::new(limits.heavy_jobs.max(1))),
+            jobs: Mutex::new(BTreeMap::new()),
+        }
+    }
+
+    /// The job of this id, if kept.
+    pub fn get(&self, id: u64) -> Option<Arc<Job>> {
+        lock(&self.jobs).get(&id).cloned()
+    }
+
+    /// Jobs waiting for a slot.
+    pub fn queued(&self) -> usize {
+        self.queued.load(Ordering::Relaxed)
+    }
+
+    /// Starts `work` as a job of kind `kind` (on a blocking thread once a heavy slot is free);
+    /// refused with 503 when the queue is full. Must be called within the Tokio runtime.
+    pub fn spawn<F>(self: &Arc<Self>, kind: &'static str, work: F) -> Result<Arc<Job>, ApiError>
+    where
+        F: FnOnce(&Job) -> Result<Value, ApiError> + Send + 'static,
+    {
+        let waiting = self.queued.fetch_add(1, Ordering::SeqCst);
+        if waiting >= self.limits.queued_jobs {
+            self.queued.fetch_sub(1, Ordering::SeqCst);
+            return Err(ApiError::busy(format!(
+                "{waiting} jobs are waiting already (at most {}): try again when one ends",
+                self.limits.queued_jobs
+            )));
+        }
+        let job = Arc::new(Job {
+            id: self.next.fetch_add(1, Ordering::Relaxed),
+            kind,
+            cancel: Cancel::new(),
+            created: Instant::now(),
+            started: Mutex::new(None),
+            state: Mutex::new(State::Queued),
+            progress: Mutex::new(Vec::new()),
+            done_shots: AtomicU64::new(0),
+            note: Mutex::new(String::new()),
+            cancel_reason: Mutex::new(None),
+        });
+        self.keep(job.clone());
+        let jobs = self.clone();
+        let run = job.clone();
+        tokio::spawn(async move {
+            let permit = jobs.heavy.clone().acquire_owned().await;
+            jobs.queued.fetch_sub(1, Ordering::SeqCst);
+            let Ok(_permit) = permit else {
+                *lock(&run.state) = State::Failed(ApiError::internal("the job slots closed"));
+                return;
+            };
+            if run.cancel.is_cancelled() {
+                let reason = lock(&run.cancel_reason).clone().unwrap_or_default();
+                *lock(&run.state) = State::Cancelled(reason);
+                return;
+            }
+            *lock(&run.started) = Some(Instant::now());
+            *lock(&run.state) = State::Running;
+            let watchdog = {
+                let job = run.clone();
+                let limit = jobs.limits.job_time;
+                tokio::spawn(async move {
+                    tokio::time::sleep(limit).await;
+                    job.cancel_with(&format!(
+                        "stopped at the server's wall-time limit of {} s",
+                        limit.as_secs_f64()
+                    ));
+                })
+            };
+            let worker = run.clone();
+            let out = tokio::task::spawn_blocking(move || work(&worker)).await;
+            watchdog.abort();
+            run.unwatch();
+            let state = if run.cancel.is_cancelled() {
+                State::Cancelled(lock(&run.cancel_reason).clone().unwrap_or_default())
+            } else {
+                match out {
+                    Ok(Ok(v)) => State::Done(Arc::new(v)),
+                    Ok(Err(e)) => State::Failed(e),
+                    Err(e) => State::Failed(ApiError::internal(format!("the job stopped: {e}"))),
+                }
+            };
+            *lock(&run.state) = state;
+        });
+        Ok(job)
+    }
+
+    /// Keeps `job`, forgetting the oldest finished jobs beyond the limit.
+    fn keep(&self, job: Arc<Job>) {
+        let mut jobs = lock(&self.jobs);
+        jobs.insert(job.id, job);
+        let finished: Vec<u64> = jobs
+            .iter()
+            .filter(|(_, j)| j.finished())
+            .map(|(id, _)| *id)
+            .collect();
+        let excess = finished.len().saturating_sub(self.limits.kept_jobs);
+        for id in finished.into_iter().take(excess) {
+            jobs.remove(&id);
+        }
+    }
+}

@@ -1,0 +1,389 @@
+//! The API on the router itself (no socket): answers are the crates' own numbers and the
+//! command line's messages; bad input is 400 naming the key; everything is bounded; long work
+//! is a job that reports progress and can be cancelled.
+
+use axum::Router;
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use http_body_util::BodyExt;
+use serde_json::{Value, json};
+use snooker_server::{Config, Limits, router};
+use std::time::Duration;
+use tower::ServiceExt;
+
+fn app() -> Router {
+    router(Config::default())
+}
+
+async fn call(app: &Router, method: &str, path: &str, body: Option<Value>) -> (StatusCode, Value) {
+    let req = Request::builder().method(method).uri(path);
+    let req = match body {
+        Some(b) => req
+            .header("content-type", "application/json")
+            .body(Body::from(b.to_string())),
+        None => req.body(Body::empty()),
+    }
+    .unwrap();
+    let r = app.clone().oneshot(req).await.unwrap();
+    let status = r.status();
+    let bytes = r.into_body().collect().await.unwrap().to_bytes();
+    let v = serde_json::from_slice(&bytes)
+        .unwrap_or(Value::String(String::from_utf8_lossy(&bytes).into()));
+    (status, v)
+}
+
+async fn raw(app: &Router, method: &str, path: &str, body: Vec<u8>) -> (StatusCode, Vec<u8>) {
+    let req = Request::builder()
+        .method(method)
+        .uri(path)
+        .header("content-type", "application/json")
+        .body(Body::from(body))
+        .unwrap();
+    let r = app.clone().oneshot(req).await.unwrap();
+    let status = r.status();
+    (
+        status,
+        r.into_body().collect().await.unwrap().to_bytes().to_vec(),
+    )
+}
+
+const CUT_30: &str = include_str!("../../scenes/cut-30.toml");
+
+/// The scene file's keys as JSON, from its TOML text.
+fn scene_json(text: &str) -> Value {
+    serde_json::to_value(toml::from_str::<toml::Table>(text).unwrap()).unwrap()
+}
+
+#[tokio::test]
+async fn the_simulated_result_is_the_command_lines() {
+    let app = app();
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(CUT_30)})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    // What `snooker simulate cut-30.toml --json` writes: the scene crate's reader, the engine,
+    // the result record.
+    let scene = snooker_scene::parse(CUT_30, "cut-30.toml").unwrap();
+    let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
+    let want = serde_json::to_value(snooker_scene::result::result_record(&scene, &shot)).unwrap();
+    assert_eq!(v["result"], want);
+    // The paths pass through every event position and end at the final positions.
+    let balls = v["paths"]["balls"].as_array().unwrap();
+    for (id, fin) in want["final"].as_object().unwrap() {
+        let p = balls.iter().find(|b| b["id"] == *id).unwrap();
+        let n = p["x"].as_array().unwrap().len();
+        assert_eq!(p["x"][n - 1], fin["pos"][0], "{id}");
+        assert_eq!(p["y"][n - 1], fin["pos"][1], "{id}");
+    }
+    // The download is the command's bytes.
+    let (s, bytes) = raw(
+        &app,
+        "POST",
+        "/api/download/result",
+        serde_json::to_vec(&json!({"scene": scene_json(CUT_30)})).unwrap(),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    let text = serde_json::to_string_pretty(&want).unwrap() + "\n";
+    assert_eq!(String::from_utf8(bytes).unwrap(), text);
+}
+
+#[tokio::test]
+async fn the_scene_downloaded_reads_back_to_the_same_shot() {
+    let app = app();
+    let (s, pos) = call(&app, "GET", "/api/layouts/break-off-shot", None).await;
+    assert_eq!(s, StatusCode::OK, "{pos}");
+    // The layout is expanded: every ball listed, so the page can move any of them.
+    assert_eq!(pos["scene"]["balls"].as_array().unwrap().len(), 22);
+    let mut scene = pos["scene"].clone();
+    scene["cue"] =
+        json!({"ball": "cue", "speed": 5.0, "aim": 0.03, "offset": [0.0, 0.0], "elevation": 0.0});
+    let (s, toml_bytes) = raw(
+        &app,
+        "POST",
+        "/api/download/scene",
+        serde_json::to_vec(&json!({"scene": scene})).unwrap(),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    let text = String::from_utf8(toml_bytes).unwrap();
+    let file = snooker_scene::parse(&text, "down.toml").unwrap();
+    let a = snooker_engine::simulate(&file.setup, &file.options).unwrap();
+    let (_, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": scene}))).await;
+    let want = serde_json::to_value(snooker_scene::result::result_record(&file, &a)).unwrap();
+    assert_eq!(v["result"]["final"], want["final"]);
+}
+
+#[tokio::test]
+async fn bad_input_is_400_with_the_command_lines_message() {
+    let app = app();
+    // Overlapping balls, as a pasted file: the message `snooker simulate` prints.
+    let text = "name = \"bad\"\n[[balls]]\nid = \"cue\"\npos = [0.5, 0.4]\n[[balls]]\nid = \"red\"\npos = [0.51, 0.4]\n";
+    let cli = snooker_scene::parse(text, "bad.toml").unwrap_err();
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/scene/import",
+        Some(json!({"toml": text, "name": "bad.toml"})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["message"], cli.to_string());
+    assert_eq!(v["key"], cli.key);
+    assert_eq!(v["file"], "bad.toml");
+    // The same scene as JSON: the key at fault, in the scene.
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(text)})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("scene"), Some(cli.key.as_str()))
+    );
+    // An unknown key of the scene and of the request.
+    let mut bad = scene_json(CUT_30);
+    bad["balls"][0]["colour"] = json!("white");
+    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": bad}))).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "balls[0].colour", "{v}");
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(CUT_30), "speed": 3})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["file"], "request", "{v}");
+    // A plan's own keys.
+    let plan = json!({"scene": scene_json(CUT_30), "pot": "red", "pocket": "nowhere", "target": [1.0, 0.5]});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(plan)).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("request"), Some("pocket")),
+        "{v}"
+    );
+    // Not JSON.
+    let (s, _) = raw(&app, "POST", "/api/simulate", b"{\"scene\": ".to_vec()).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+}
+
+#[tokio::test]
+async fn requests_are_bounded() {
+    let limits = Limits {
+        body_bytes: 4096,
+        balls: 3,
+        plan_samples: 64,
+        ..Limits::default()
+    };
+    let app = router(Config {
+        limits,
+        recorder: None,
+    });
+    // A body over the limit is refused before it is read whole.
+    let (s, _) = raw(&app, "POST", "/api/simulate", vec![b' '; 10_000]).await;
+    assert_eq!(s, StatusCode::PAYLOAD_TOO_LARGE);
+    // Too many balls.
+    let four = scene_json(
+        "[[balls]]\nid = \"cue\"\npos = [0.5, 0.4]\n[[balls]]\nid = \"red1\"\npos = [1.0, 0.4]\n[[balls]]\nid = \"red2\"\npos = [1.5, 0.4]\n[[balls]]\nid = \"red3\"\npos = [2.0, 0.4]\n",
+    );
+    let (s, v) = call(&app, "POST", "/api/simulate", Some(json!({"scene": four}))).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("scene"), Some("balls"))
+    );
+    // Too many samples.
+    let plan = json!({"scene": scene_json(CUT_30), "pot": "red", "pocket": "top-right", "target": [1.0, 0.5], "samples": 65});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(plan)).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "samples");
+    // A shot asking for more simulated time than the server gives is held to the server's:
+    // cut-30 moves for 6 s, so with 0.5 s it cannot finish (422, not a hang).
+    let short = router(Config {
+        limits: Limits {
+            sim_time: 0.5,
+            ..Limits::default()
+        },
+        recorder: None,
+    });
+    let mut long = scene_json(CUT_30);
+    long["sim"] = json!({"max_time": 3600.0});
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": long.clone()})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    let (s, v) = call(
+        &short,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": long})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::UNPROCESSABLE_ENTITY, "{v}");
+    assert_eq!(v["file"], "scene", "{v}");
+    // No recordings without a recorder.
+    let (s, _) = call(
+        &app,
+        "POST",
+        "/api/download/recording",
+        Some(json!({"scene": scene_json(CUT_30)})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::NOT_FOUND);
+}
+
+#[tokio::test]
+async fn files_named_by_a_request_are_never_read() {
+    let app = app();
+    // A file name is only a label in messages.
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/scene/import",
+        Some(json!({"toml": "", "name": "/etc/hostname"})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+    // Only the built-in assets are served.
+    for p in [
+        "/../Cargo.toml",
+        "/server/src/lib.rs",
+        "/%2e%2e/Cargo.toml",
+        "/etc/passwd",
+    ] {
+        let (s, _) = call(&app, "GET", p, None).await;
+        assert_eq!(s, StatusCode::NOT_FOUND, "{p}");
+    }
+    for p in snooker_server::assets::paths() {
+        let (s, _) = call(&app, "GET", p, None).await;
+        assert_eq!(s, StatusCode::OK, "{p}");
+    }
+}
+
+async fn wait(app: &Router, id: u64) -> Value {
+    for _ in 0..6000 {
+        let (_, v) = call(app, "GET", &format!("/api/jobs/{id}"), None).await;
+        if v["state"] != "queued" && v["state"] != "running" {
+            return v;
+        }
+        tokio::time::sleep(Duration::from_millis(20)).await;
+    }
+    panic!("job {id} did not end");
+}
+
+const CH7: &str = include_str!("../../scenes/chapter7-example.toml");
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_plan_is_a_job_that_replays_and_can_be_cancelled() {
+    let app = app();
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 32, "alternatives": 2});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(req)).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    let done = wait(&app, v["id"].as_u64().unwrap()).await;
+    assert_eq!(done["state"], "done", "{done}");
+    let r = &done["result"];
+    assert!(done["shots"].as_u64().unwrap() > 0);
+    assert_eq!(done["shots"], r["plan"]["shots_simulated"]);
+    // The scene written replays the best shot (as `snooker simulate` of --scene-out does).
+    let scene = snooker_scene::parse(r["scene_toml"].as_str().unwrap(), "planned.toml").unwrap();
+    let shot = snooker_engine::simulate(&scene.setup, &scene.options).unwrap();
+    let cue = scene
+        .setup
+        .balls
+        .iter()
+        .position(|b| b.id == "cue")
+        .unwrap();
+    let end = shot.final_states()[cue].pos;
+    assert_eq!(json!([end.x, end.y]), r["plan"]["best"]["cue_final"]);
+    assert!(r["plan"]["best"]["potted"].as_bool().unwrap());
+    // A large plan, cancelled: it stops, saying so, with the shots it had simulated.
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
+    let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
+    let id = v["id"].as_u64().unwrap();
+    loop {
+        let (_, v) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
+        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let (s, _) = call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
+    assert_eq!(s, StatusCode::OK);
+    let end = wait(&app, id).await;
+    assert_eq!(end["state"], "cancelled", "{end}");
+    assert_eq!(end["reason"], "cancelled on request");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_job_outliving_its_wall_time_is_cancelled() {
+    let limits = Limits {
+        job_time: Duration::from_millis(200),
+        ..Limits::default()
+    };
+    let app = router(Config {
+        limits,
+        recorder: None,
+    });
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
+    let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
+    let end = wait(&app, v["id"].as_u64().unwrap()).await;
+    assert_eq!(end["state"], "cancelled", "{end}");
+    assert!(
+        end["reason"].as_str().unwrap().contains("wall-time limit"),
+        "{end}"
+    );
+}
+
+#[tokio::test]
+async fn a_stroke_of_a_frame_is_judged_by_the_rules_crate() {
+    let app = app();
+    let (_, pos) = call(&app, "GET", "/api/layouts/break-off", None).await;
+    assert_eq!(pos["frame"]["ball_in_hand"], true);
+    // The cue ball in hand is placed in the D already.
+    let mut frame = pos["scene"].clone();
+    assert_eq!(frame["balls"][0]["id"], "cue");
+    frame["frame"] = pos["frame"].clone();
+    frame["cue"] =
+        json!({"ball": "cue", "speed": 6.0, "aim": 0.05, "offset": [0.0, 0.0], "elevation": 0.0});
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/frame/stroke",
+        Some(json!({"frame": frame})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    // The rules crate on the same frame, as `snooker referee` reads it.
+    let file = snooker_rules::from_value(&frame, "frame").unwrap();
+    let shot = snooker_engine::simulate(&file.scene.setup, &file.scene.options).unwrap();
+    let verdict = file.frame.judge(&shot).unwrap();
+    let want =
+        serde_json::to_value(verdict.report::<snooker_scene::result::ShotRecord>(None)).unwrap();
+    assert_eq!(v["referee"], want);
+    assert!(v["next"].is_object());
+    // A frame with its strike missing names the key.
+    frame.as_object_mut().unwrap().remove("cue");
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/frame/stroke",
+        Some(json!({"frame": frame})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "cue");
+}

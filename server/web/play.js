@@ -1,0 +1,120 @@
+// The Play panel: a frame of snooker played stroke by stroke with the strike set by hand; the
+// rules crate's referee judges each stroke (verdict, foul, points, scores, who plays next) and
+// gives the frame that follows. The player (issue 23's crate) plays its visits here once the
+// server is built with it: until then its part is shown as waiting, and nothing stands in for
+// its reasoning.
+
+import * as api from "./api.js";
+
+const $ = (id) => document.getElementById(id);
+
+export class PlayPanel {
+  constructor(lab) {
+    this.lab = lab;
+    this.strokes = 0;
+  }
+
+  setInfo(info) {
+    const box = $("player-box");
+    if (info.player) {
+      box.classList.remove("waiting");
+      $("player-visit").disabled = false;
+      $("player-note").textContent = "";
+    } else {
+      box.dataset.waiting = "true";
+      $("player-visit").disabled = true;
+      $("player-note").textContent =
+        "Waiting for the player (issue 23): this server is built without it. Its visits, " +
+        "the stroke it chooses and what else it considered will show here once it lands; " +
+        "until then play both sides by hand with the referee below.";
+    }
+  }
+
+  setPosition(position) {
+    const f = position.frame;
+    const board = $("scoreboard");
+    const nom = $("nominate");
+    $("play-stroke").disabled = !f;
+    if (!f) {
+      board.textContent = "Not a frame of snooker: load break-off or open-table to play.";
+      nom.replaceChildren();
+      nom.disabled = true;
+      return;
+    }
+    board.textContent =
+      `Player 0: ${f.scores[0]} · Player 1: ${f.scores[1]} — player ${f.to_play} to play, ` +
+      `on ${f.on}${f.free_ball ? " (free ball)" : ""}${f.ball_in_hand ? ", cue ball in hand (drag it within the D)" : ""}`;
+    const noms = (position.rules && position.rules.nominations) || [];
+    const needs = f.on === "colour" || f.free_ball;
+    nom.replaceChildren(...noms.map((c) => new Option(c, c)));
+    nom.disabled = !needs || noms.length === 0;
+    if (needs && noms.length) nom.value = noms.includes("black") ? "black" : noms[noms.length - 1];
+  }
+
+  // The frame of the request: the position, its [frame] table, the strike.
+  frame() {
+    const lab = this.lab;
+    const f = structuredClone(lab.position.frame);
+    const needs = f.on === "colour" || f.free_ball;
+    if (needs) f.nominated = $("nominate").value;
+    else delete f.nominated;
+    const scene = lab.scene();
+    scene.frame = f;
+    return scene;
+  }
+
+  async stroke() {
+    const lab = this.lab;
+    if (!lab.position.frame || lab.busy) return;
+    lab.busy = true;
+    try {
+      lab.status("playing the stroke…");
+      const v = await api.post("/api/frame/stroke", { frame: this.frame() });
+      this.strokes += 1;
+      this.showVerdict(v.referee);
+      lab.showShot(v.shot, () => {
+        if (v.next) {
+          lab.setPosition(v.next, "the frame after the stroke");
+          // The stroke's paths stay drawn over the position it left.
+          lab.table.drawPaths(v.shot.paths);
+        } else this.over(v.referee);
+      });
+      lab.status(v.referee.legal ? "legal stroke" : `foul: ${v.referee.foul.reason}`);
+    } catch (e) {
+      lab.fail(e);
+    } finally {
+      lab.busy = false;
+    }
+  }
+
+  showVerdict(r) {
+    const d = $("verdict");
+    const p = document.createElement("p");
+    p.id = "verdict-line";
+    p.className = r.legal ? "legal" : "foul";
+    const potted = r.potted.length ? `potted ${r.potted.join(", ")}` : "nothing potted";
+    const first = r.first_hit ? `first hit ${r.first_hit}` : "no ball hit";
+    p.textContent = r.legal
+      ? `Legal: ${first}, ${potted}, ${r.points} points. Scores ${r.scores[0]}–${r.scores[1]}.`
+      : `Foul (${r.foul.reason}, ${r.foul.points} to the opponent): ${first}, ${potted}. Scores ${r.scores[0]}–${r.scores[1]}.`;
+    d.replaceChildren(p);
+    const li = document.createElement("li");
+    li.textContent = p.textContent;
+    $("strokes").appendChild(li);
+  }
+
+  over(r) {
+    $("scoreboard").textContent = `Frame over: player ${r.winner} wins, ${r.scores[0]}–${r.scores[1]}.`;
+    $("play-stroke").disabled = true;
+  }
+
+  wire() {
+    $("new-frame").addEventListener("click", () => {
+      this.strokes = 0;
+      $("strokes").replaceChildren();
+      $("verdict").replaceChildren();
+      this.lab.loadLayout("break-off");
+    });
+    $("play-stroke").addEventListener("click", () => this.stroke());
+  }
+}
