@@ -7,7 +7,7 @@
 //!   ([`reachable`], seed 7), planned one after the other: criterion's time divided by twelve
 //!   is the mean per plan. Before it the bench prints each position's own wall time (the
 //!   median of three runs), shots simulated and distance reached, and their median: the
-//!   numbers the README reports.
+//!   numbers the book reports (docs/performance.md).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rand::SeedableRng;

@@ -1,6 +1,6 @@
 """The snooker engine from Python: event-driven shots with the thesis's frictional impacts.
 
-Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's README.
+Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's book (docs/physics.md).
 
     >>> import snooker
     >>> shot = snooker.simulate({"balls": [{"id": "cue", "pos": [1.0, 0.8]},

@@ -11,7 +11,7 @@ use std::process::ExitCode;
 /// Arguments of `snooker simulate`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Scene file (TOML); see the README for the format.
+    /// Scene file (TOML); the format is the book's "File formats" page (docs/formats.md).
     pub scene: Option<PathBuf>,
     /// Write the result as JSON to this file, or to standard output with `-`.
     #[arg(long, value_name = "OUT")]
