@@ -31,6 +31,7 @@ pub mod log;
 pub mod outcome;
 pub mod player;
 pub mod value;
+pub mod watch;
 
 pub use agent::{Agent, ChooseError, Context};
 pub use decision::{Considered, Decision, PlanKind};
@@ -38,3 +39,4 @@ pub use game::{End, Game, PlayError, PlayOptions, StrokeRecord, Until, executed,
 pub use greedy::Greedy;
 pub use player::Player;
 pub use value::Valuer;
+pub use watch::Watch;

@@ -1,7 +1,9 @@
 //! Long work (a plan, the player thinking) as jobs: started at once with an id, run when one
 //! of the server's few heavy slots is free (a semaphore), watched for progress (shots
 //! simulated so far), cancelled on request or when it outlives its wall time (a [`Cancel`]
-//! flag the planner checks before every shot), and kept a while for its result.
+//! flag the planner checks before every shot), and kept a while for its result. A job may
+//! report parts of its answer as it goes (the player's strokes, one by one): a poll asks for
+//! the parts from the first it has not seen.
 
 use crate::error::ApiError;
 use crate::limits::Limits;
@@ -23,6 +25,12 @@ pub trait Progress: Send + Sync {
 impl Progress for snooker_planner::Problem {
     fn shots(&self) -> u64 {
         snooker_planner::Problem::shots(self)
+    }
+}
+
+impl Progress for snooker_player::Watch {
+    fn shots(&self) -> u64 {
+        snooker_player::Watch::shots(self)
     }
 }
 
@@ -57,6 +65,7 @@ pub struct Job {
     done_shots: AtomicU64,
     note: Mutex<String>,
     cancel_reason: Mutex<Option<String>>,
+    parts: Mutex<Vec<Arc<Value>>>,
 }
 
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
@@ -83,6 +92,11 @@ impl Job {
         list.clear();
     }
 
+    /// Reports a part of the answer (a stroke played), for the polls to come.
+    pub fn report(&self, part: Value) {
+        lock(&self.parts).push(Arc::new(part));
+    }
+
     /// A line saying what the job is doing now.
     pub fn set_note(&self, note: impl Into<String>) {
         *lock(&self.note) = note.into();
@@ -104,8 +118,14 @@ impl Job {
         )
     }
 
-    /// The job as the API reports it.
+    /// The job as the API reports it (no parts).
     pub fn status(&self) -> JobStatus {
+        self.status_since(None)
+    }
+
+    /// The job as the API reports it, with the parts reported from number `since` (from 0) on
+    /// when asked for.
+    pub fn status_since(&self, since: Option<usize>) -> JobStatus {
         let state = lock(&self.state).clone();
         let started = *lock(&self.started);
         let (name, result, error, reason) = match state {
@@ -114,6 +134,11 @@ impl Job {
             State::Done(v) => ("done", Some(v), None, None),
             State::Failed(e) => ("failed", None, Some(e), None),
             State::Cancelled(r) => ("cancelled", None, None, Some(r)),
+        };
+        let (reported, parts) = {
+            let all = lock(&self.parts);
+            let parts = since.map(|k| all.get(k..).unwrap_or_default().to_vec());
+            (all.len(), parts)
         };
         JobStatus {
             id: self.id,
@@ -128,6 +153,8 @@ impl Job {
             result,
             error,
             reason,
+            reported,
+            parts,
         }
     }
 }
@@ -158,11 +185,30 @@ pub struct JobStatus {
     /// Why it was cancelled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
+    /// Parts of the answer reported so far (strokes played).
+    pub reported: usize,
+    /// The parts from the one asked for (`?since=N`) on, when asked for.
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "shared_parts"
+    )]
+    pub parts: Option<Vec<Arc<Value>>>,
 }
 
 /// A kept result, written as the value it holds (shared, not copied, between polls).
 fn shared<S: serde::Serializer>(v: &Option<Arc<Value>>, s: S) -> Result<S::Ok, S::Error> {
     v.as_deref().serialize(s)
+}
+
+/// Kept parts, written as the values they hold.
+fn shared_parts<S: serde::Serializer>(
+    v: &Option<Vec<Arc<Value>>>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(parts) => s.collect_seq(parts.iter().map(|p| p.as_ref())),
+        None => s.serialize_none(),
+    }
 }
 
 /// The server's jobs.
@@ -221,6 +267,7 @@ impl Jobs {
             done_shots: AtomicU64::new(0),
             note: Mutex::new(String::new()),
             cancel_reason: Mutex::new(None),
+            parts: Mutex::new(Vec::new()),
         });
         self.keep(job.clone());
         let jobs = self.clone();
