@@ -24,12 +24,15 @@ async fn main() -> std::process::ExitCode {
     println!(
         "{rounds} rounds of {clients} simulations and {plans} plans ({samples} samples) at once"
     );
+    // SHOTLAB_TRIM=1: the allocator's free memory handed back after each round.
+    let trim = std::env::var("SHOTLAB_TRIM").is_ok_and(|v| v == "1");
     let mut r = load::run(
         snooker_server::Limits::default(),
         clients,
         plans,
         samples,
         rounds,
+        trim,
     )
     .await;
     let (sim_max, plan_max) = (
@@ -56,6 +59,12 @@ async fn main() -> std::process::ExitCode {
         .map(|k| format!("{:.1}", *k as f64 / 1024.0))
         .collect();
     println!("resident memory after each round, MB: {}", mb.join(", "));
+    let live: Vec<String> = r
+        .live_kb
+        .iter()
+        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
+        .collect();
+    println!("heap live after each round, MB: {}", live.join(", "));
     println!("wall time {:.1} s; errors: {}", r.wall, r.errors.len());
     for e in r.errors.iter().take(10) {
         println!("  {e}");

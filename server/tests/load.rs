@@ -12,7 +12,7 @@ async fn concurrent_requests_all_succeed_and_memory_stays_flat() {
         kept_jobs: 4,
         ..snooker_server::Limits::default()
     };
-    let r = load::run(limits, 24, 2, 16, 8).await;
+    let r = load::run(limits, 24, 2, 16, 8, false).await;
     assert!(r.errors.is_empty(), "{:?}", r.errors);
     assert_eq!(r.simulations, 24 * 8);
     assert_eq!(r.plans, 2 * 8);
