@@ -253,8 +253,8 @@ pub fn run(checked: Checked, job: &Job) -> Result<Value, ApiError> {
     job.set_note(format!("player {side} deciding stroke 1"));
     let mut failed = None;
     let game = play(&frame, [&Player, &Player], &opts, |s| {
-        match stroke_view(s, rate, &limits) {
-            Ok(v) => job.report(v),
+        match stroke_view(s, rate, &limits).and_then(|v| job.report(v)) {
+            Ok(()) => {}
             Err(e) => {
                 failed.get_or_insert(e);
             }

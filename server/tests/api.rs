@@ -348,6 +348,38 @@ async fn a_job_outliving_its_wall_time_is_cancelled() {
     );
 }
 
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn finished_jobs_are_kept_within_the_byte_limit() {
+    // Room for two and a half plan answers (all the same size: the same plan).
+    let probe = app();
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 8, "alternatives": 0});
+    let (_, v) = call(&probe, "POST", "/api/plan", Some(req.clone())).await;
+    let done = wait(&probe, v["id"].as_u64().unwrap()).await;
+    let size = done["result"].to_string().len();
+    let app = router(Config {
+        limits: Limits {
+            kept_bytes: 2 * size + size / 2,
+            ..Limits::default()
+        },
+        recorder: None,
+    });
+    let mut ids = Vec::new();
+    for _ in 0..4 {
+        let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+        assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+        let id = v["id"].as_u64().unwrap();
+        assert_eq!(wait(&app, id).await["state"], "done");
+        ids.push(id);
+    }
+    let mut kept = Vec::new();
+    for id in &ids {
+        let (s, _) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
+        kept.push(s == StatusCode::OK);
+    }
+    // The fourth start found three answers kept, over the limit, and forgot the oldest.
+    assert_eq!(kept, [false, true, true, true], "{ids:?}");
+}
+
 #[tokio::test]
 async fn a_stroke_of_a_frame_is_judged_by_the_rules_crate() {
     let app = app();
