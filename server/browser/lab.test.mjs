@@ -286,7 +286,7 @@ try {
   await page.waitForFunction(() => window.lab.position.frame && window.lab.position.scene.balls.filter((b) => /^red/.test(b.id)).length === 3);
   await page.selectOption("#replay-speed", "4");
   await page.fill("#player-effort", "400");
-  await page.fill("#player-seed", "3");
+  await page.fill("#player-seed", "6");
   await page.click("#player-visit");
   await page.waitForSelector("#player-chosen", { timeout: 120000 });
   const shown = await page.evaluate(() => {

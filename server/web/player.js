@@ -195,7 +195,8 @@ export class PlayerPanel {
       `Stroke ${part.number} (player ${part.player}): ${describe(p)}` +
       (extras.length ? `; ${extras.join("; ")}` : "") +
       `. Pot probability ${p.pot_probability.toFixed(3)}, expected value ${p.value.toFixed(3)} points ` +
-      `(${p.samples} noise samples); ${d.shots_simulated} shots in ${part.decision_time.toFixed(2)} s.`;
+      `(the points and the position left, the mean of ${p.samples} noise samples); ` +
+      `${d.shots_simulated} shots in ${part.decision_time.toFixed(2)} s.`;
     const meant = document.createElement("p");
     meant.className = "about";
     meant.textContent = `Meant: ${strike(d.strike)}. Played (with the noise): ${strike(part.executed)}.`;
