@@ -6,7 +6,8 @@
 // the JSON result downloaded is the command's bytes; shows a bad scene's error as the command
 // says it; plans a shot (picked on the table), cancels a plan, plays the planned shot; plays a
 // stroke of a frame with the referee; lets the player play a visit (its reasoning checked against
-// the server's JSON, the scores against the referee's) and cancels a long one. Fails on any
+// the server's JSON, the scores against the referee's), then starts a frame against the player
+// and cancels its visit while it thinks. Fails on any
 // console error, page error or request off the local server.
 //
 //   SNOOKER_BIN=target/ci/snooker node server/browser/lab.test.mjs [--screenshots DIR]
@@ -340,8 +341,12 @@ try {
   log(`the player's visit: ${strokes} strokes; ${over}; ${board}`);
   await shot("shotlab-player.png", "#play-panel");
 
+  // A frame against the player, who takes the side now to play: its visit starts by itself
+  // (at the effort limit, so that it is still thinking when cancelled).
   await page.fill("#player-effort", String(info.limits.play_effort));
-  await page.click("#player-visit");
+  const toPlay = await page.evaluate(() => window.lab.position.frame.to_play);
+  await page.selectOption("#player-side", String(toPlay));
+  await page.check("#vs-player");
   await page.waitForFunction(() => /running: [1-9]/.test(document.getElementById("player-status").textContent), null, { timeout: 60000 });
   const jobId = await page.evaluate(() => window.lab.player.job);
   await page.click("#player-cancel");
