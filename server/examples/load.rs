@@ -11,6 +11,15 @@
 #[path = "../tests/common/load.rs"]
 mod load;
 
+/// kB figures as MB, listed.
+fn mb(kb: &[u64]) -> String {
+    let list: Vec<String> = kb
+        .iter()
+        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
+        .collect();
+    list.join(", ")
+}
+
 fn arg(n: usize, default: usize) -> usize {
     std::env::args()
         .nth(n)
@@ -53,18 +62,8 @@ async fn main() -> std::process::ExitCode {
         load::quantile(&mut r.plan_times, 0.95),
         plan_max
     );
-    let mb: Vec<String> = r
-        .rss_kb
-        .iter()
-        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
-        .collect();
-    println!("resident memory after each round, MB: {}", mb.join(", "));
-    let live: Vec<String> = r
-        .live_kb
-        .iter()
-        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
-        .collect();
-    println!("heap live after each round, MB: {}", live.join(", "));
+    println!("resident memory after each round, MB: {}", mb(&r.rss_kb));
+    println!("heap live after each round, MB: {}", mb(&r.live_kb));
     println!("wall time {:.1} s; errors: {}", r.wall, r.errors.len());
     for e in r.errors.iter().take(10) {
         println!("  {e}");

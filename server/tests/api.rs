@@ -285,6 +285,20 @@ async fn wait(app: &Router, id: u64) -> Value {
     panic!("job {id} did not end");
 }
 
+/// Cancels job `id` once it has simulated a shot, and waits for its end.
+async fn cancel_when_running(app: &Router, id: u64) -> Value {
+    loop {
+        let (_, v) = call(app, "GET", &format!("/api/jobs/{id}"), None).await;
+        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let (s, _) = call(app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
+    assert_eq!(s, StatusCode::OK);
+    wait(app, id).await
+}
+
 const CH7: &str = include_str!("../../scenes/chapter7-example.toml");
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -313,17 +327,7 @@ async fn a_plan_is_a_job_that_replays_and_can_be_cancelled() {
     // A large plan, cancelled: it stops, saying so, with the shots it had simulated.
     let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
     let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
-    let id = v["id"].as_u64().unwrap();
-    loop {
-        let (_, v) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
-        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
-            break;
-        }
-        tokio::time::sleep(Duration::from_millis(10)).await;
-    }
-    let (s, _) = call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
-    assert_eq!(s, StatusCode::OK);
-    let end = wait(&app, id).await;
+    let end = cancel_when_running(&app, v["id"].as_u64().unwrap()).await;
     assert_eq!(end["state"], "cancelled", "{end}");
     assert_eq!(end["reason"], "cancelled on request");
 }
@@ -536,17 +540,7 @@ async fn a_play_request_is_checked_and_its_job_can_be_cancelled() {
     let req = json!({"frame": frame, "effort": most});
     let (s, v) = call(&app, "POST", "/api/play", Some(req)).await;
     assert_eq!(s, StatusCode::ACCEPTED, "{v}");
-    let id = v["id"].as_u64().unwrap();
-    loop {
-        let (_, v) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
-        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
-            break;
-        }
-        tokio::time::sleep(Duration::from_millis(10)).await;
-    }
-    let (s, _) = call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
-    assert_eq!(s, StatusCode::OK);
-    let end = wait(&app, id).await;
+    let end = cancel_when_running(&app, v["id"].as_u64().unwrap()).await;
     assert_eq!(end["state"], "cancelled", "{end}");
     assert_eq!(end["reason"], "cancelled on request");
     // It stopped with less than one stroke's budget simulated: the player saw the flag.

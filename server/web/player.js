@@ -151,11 +151,7 @@ export class PlayerPanel {
 
   async cancel() {
     if (this.job == null) return;
-    try {
-      await api.post(`/api/jobs/${this.job}/cancel`, {});
-    } catch (e) {
-      this.lab.fail(e);
-    }
+    await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
   }
 
   // One stroke of the player: the frame it was played from (the cue ball where it placed it),
