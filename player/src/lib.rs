@@ -10,7 +10,8 @@
 //! ([`outcome`]); a safety when no pot is worth its risk; the cue ball in hand placed where the
 //! pots are best. [`Greedy`] is the baseline: the likeliest pot, no position, no safety.
 //! [`play`] plays a visit or a frame; [`StrokeRecord::log_line`] writes the play log
-//! (formats.md, "Play log").
+//! (formats.md, "Play log"). A [`Watch`] in the options counts the shots simulated and stops
+//! the play when its flag is raised (the shot lab's progress bar and cancel button).
 //!
 //! ```no_run
 //! use snooker_player::{Player, PlayOptions, play};

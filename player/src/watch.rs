@@ -2,7 +2,9 @@
 //! stops the work (a user's cancel button, a server's wall-time limit). The flag is the
 //! planner's [`Cancel`]: the planner problems of a decision watch it too, so the search, the
 //! noise samples and the play all run out within a batch of shots once it is raised; a
-//! decision or a play cut short is void ([`crate::ChooseError::Cancelled`]).
+//! decision or a play cut short is void ([`crate::ChooseError::Cancelled`]). The player
+//! ([`crate::Player`]) counts and checks it; the greedy baseline ([`crate::Greedy`], a few
+//! hundred shots a stroke) does neither, and [`crate::play`] checks it between strokes.
 
 use snooker_planner::Cancel;
 use std::sync::Arc;
