@@ -49,6 +49,7 @@ export class PlayerPanel {
     this.lab = lab;
     this.job = null;
     this.parts = [];
+    this.frameOver = false;
   }
 
   setInfo(info) {
@@ -100,6 +101,7 @@ export class PlayerPanel {
     bar.hidden = false;
     bar.removeAttribute("value");
     this.parts = [];
+    this.frameOver = false;
     let seen = 0;
     let last = null;
     try {
@@ -142,7 +144,8 @@ export class PlayerPanel {
       bar.hidden = true;
       $("player-cancel").disabled = true;
       lab.busy = false;
-      if (lab.position) {
+      // The hand strokes again, unless the frame is over (the scoreboard says who won).
+      if (lab.position && !this.frameOver) {
         $("player-visit").disabled = !lab.position.frame;
         lab.play.setPosition(lab.position);
       }
@@ -171,7 +174,10 @@ export class PlayerPanel {
         if (part.next) {
           lab.setPosition(part.next, `after the player's stroke ${part.number}`);
           lab.table.drawPaths(part.shot.paths);
-        } else lab.play.over(part.referee);
+        } else {
+          this.frameOver = true;
+          lab.play.over(part.referee);
+        }
         $("play-stroke").disabled = true;
         done();
       });
