@@ -95,6 +95,7 @@ fn main() {
             effort: a.effort,
             until: Until::Frame,
             max_strokes: a.max_strokes,
+            watch: Default::default(),
         };
         let game = play(&Frame::break_off(), agents, &opts, |_| {}).expect("a frame");
         let scores = match game.end {

@@ -15,6 +15,7 @@ fn main() {
         seed: 1,
         stroke: k as u64,
         effort,
+        watch: Default::default(),
     };
     let d = Player.choose(&frame, &ctx).unwrap();
     println!("{:?}", d.plan);

@@ -2,13 +2,14 @@
 //! baseline ([`crate::Greedy`]).
 
 use crate::decision::Decision;
+use crate::watch::Watch;
 use snooker_planner::Noise;
 use snooker_rules::Frame;
 
 /// What an agent knows beside the frame: the execution noise it will be played with, the
 /// run's seed and the stroke's number (every random draw of a decision is seeded from them),
-/// and its budget.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// its budget, and who watches it ([`Watch`]: the shots counted, the flag that stops it).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Context {
     /// The execution noise.
     pub noise: Noise,
@@ -18,6 +19,8 @@ pub struct Context {
     pub stroke: u64,
     /// The search's budget, in simulated shots.
     pub effort: u64,
+    /// Counts the shots simulated and says when to stop (the default: never).
+    pub watch: Watch,
 }
 
 /// Why no stroke could be chosen.
@@ -29,6 +32,9 @@ pub enum ChooseError {
     /// No strike at all can be played from this frame (every strike tried was refused).
     #[error("no strike can be played from this frame")]
     NoStrike,
+    /// The decision was cancelled by its [`Watch`]: whatever it had found is void.
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// Something that chooses strokes.

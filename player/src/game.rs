@@ -3,6 +3,7 @@
 
 use crate::agent::{Agent, ChooseError, Context};
 use crate::decision::Decision;
+use crate::watch::Watch;
 use snooker_engine::{Cue, Shot};
 use snooker_planner::{Noise, rng_for};
 use snooker_rules::{Frame, Next, Player as Side, Verdict};
@@ -23,7 +24,7 @@ pub enum Until {
 }
 
 /// How to play.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PlayOptions {
     /// The execution noise added to every stroke.
     pub noise: Noise,
@@ -35,6 +36,8 @@ pub struct PlayOptions {
     pub until: Until,
     /// Most strokes played: a frame that has not ended by then stops there.
     pub max_strokes: usize,
+    /// Counts the shots the agents simulate and says when to stop (the default: never).
+    pub watch: Watch,
 }
 
 impl Default for PlayOptions {
@@ -45,6 +48,7 @@ impl Default for PlayOptions {
             effort: DEFAULT_EFFORT,
             until: Until::Visit,
             max_strokes: DEFAULT_MAX_STROKES,
+            watch: Watch::default(),
         }
     }
 }
@@ -154,7 +158,8 @@ pub fn with_choices(frame: &Frame, d: &Decision) -> Result<Frame, snooker_rules:
 
 /// Plays from `frame`: `agents[p]` chooses for player p, each stroke is played with the noise
 /// and judged, until `opts.until` says stop (or the stroke cap). `on_stroke` sees each stroke
-/// as it is played.
+/// as it is played. Once `opts.watch` is cancelled no further stroke is decided or played:
+/// the play stops with [`ChooseError::Cancelled`] (the strokes seen by `on_stroke` stand).
 pub fn play(
     frame: &Frame,
     agents: [&dyn Agent; 2],
@@ -172,7 +177,15 @@ pub fn play(
             seed: opts.seed,
             stroke: number,
             effort: opts.effort,
+            watch: opts.watch.clone(),
         };
+        let cancelled = || PlayError::Choose {
+            stroke: number,
+            source: ChooseError::Cancelled,
+        };
+        if opts.watch.is_cancelled() {
+            return Err(cancelled());
+        }
         let start = Instant::now();
         let decision = agent
             .choose(&frame, &ctx)
@@ -180,6 +193,9 @@ pub fn play(
                 stroke: number,
                 source,
             })?;
+        if opts.watch.is_cancelled() {
+            return Err(cancelled());
+        }
         let decision_time = start.elapsed().as_secs_f64();
         let chosen = with_choices(&frame, &decision).map_err(|e| PlayError::Choose {
             stroke: number,

@@ -10,7 +10,8 @@
 //! ([`outcome`]); a safety when no pot is worth its risk; the cue ball in hand placed where the
 //! pots are best. [`Greedy`] is the baseline: the likeliest pot, no position, no safety.
 //! [`play`] plays a visit or a frame; [`StrokeRecord::log_line`] writes the play log
-//! (formats.md, "Play log").
+//! (formats.md, "Play log"). A [`Watch`] in the options counts the shots simulated and stops
+//! the play when its flag is raised (the shot lab's progress bar and cancel button).
 //!
 //! ```no_run
 //! use snooker_player::{Player, PlayOptions, play};
@@ -31,6 +32,7 @@ pub mod log;
 pub mod outcome;
 pub mod player;
 pub mod value;
+pub mod watch;
 
 pub use agent::{Agent, ChooseError, Context};
 pub use decision::{Considered, Decision, PlanKind};
@@ -38,3 +40,4 @@ pub use game::{End, Game, PlayError, PlayOptions, StrokeRecord, Until, executed,
 pub use greedy::Greedy;
 pub use player::Player;
 pub use value::Valuer;
+pub use watch::Watch;

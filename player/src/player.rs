@@ -214,8 +214,12 @@ fn sample(
     let results: Vec<Option<(f64, bool)>> = (0..n as u64)
         .into_par_iter()
         .map(|k| {
+            if ctx.watch.is_cancelled() {
+                return None;
+            }
             let mut rng = rng_for(ctx.seed, &[ctx.stroke, coords[0], coords[1], coords[2], k]);
             let executed = ctx.noise.apply(strike, &ball, p, &mut rng);
+            ctx.watch.count(1);
             let stroke = frame.play(&executed).ok()?;
             let o = outcome(frame, &stroke.verdict, valuer, pot);
             Some((o.value, o.potted))
@@ -274,7 +278,20 @@ impl Player {
         samples_budget: u64,
     ) -> (Vec<Evaluated>, u64) {
         let (frame, placement, place_index) = (place.frame, place.placement, place.index);
-        let targets = candidates::targets(frame);
+        // The planner's problems stop at the watch's flag; their shots are counted to it after
+        // each batch.
+        let targets: Vec<Target> = candidates::targets(frame)
+            .into_iter()
+            .map(|t| Target {
+                problem: t.problem.with_cancel(ctx.watch.cancel_flag().clone()),
+                ..t
+            })
+            .collect();
+        let counted = std::cell::Cell::new(0);
+        let report = || {
+            let now = shots(&targets);
+            ctx.watch.count(now - counted.replace(now));
+        };
         let lines = candidates::lines(&targets, valuer);
         // (line, stroke, estimated expected value).
         let mut found: Vec<(usize, Scored, f64)> = Vec::new();
@@ -318,6 +335,7 @@ impl Player {
                 break;
             }
             found.extend(run(batch, &coarse));
+            report();
         }
         // Fine: the lines whose coarse strokes promise most, best first, while it lasts.
         let mut best_of_line: Vec<(usize, f64)> = Vec::new();
@@ -336,6 +354,7 @@ impl Player {
                 break;
             }
             found.extend(run(batch, &fine));
+            report();
         }
         let mut used = shots(&targets);
         found.sort_by(|a, b| b.2.total_cmp(&a.2));
@@ -485,6 +504,10 @@ impl Player {
             .par_iter()
             .enumerate()
             .filter_map(|(k, (_, _, f, strike))| {
+                if ctx.watch.is_cancelled() {
+                    return None;
+                }
+                ctx.watch.count(1);
                 let s = f.play(strike).ok()?;
                 s.verdict.legal().then_some(())?;
                 let o = outcome(f, &s.verdict, valuer, None);
@@ -612,6 +635,9 @@ impl Agent for Player {
                     samples: MIN_SAMPLES,
                 },
             });
+        }
+        if ctx.watch.is_cancelled() {
+            return Err(ChooseError::Cancelled);
         }
         // Best expected value first; ties in the order considered.
         all.sort_by(|a, b| b.considered.value.total_cmp(&a.considered.value));

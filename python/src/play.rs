@@ -78,6 +78,7 @@ pub fn play<'py>(
         effort: positive(effort, "effort")?,
         until: if visit { Until::Visit } else { Until::Frame },
         max_strokes: positive(max_strokes as u64, "max_strokes")? as usize,
+        watch: Default::default(),
     };
     let me = self::agent(agent, "agent")?;
     let other = self::agent(opponent, "opponent")?;
@@ -130,6 +131,7 @@ pub fn choose<'py>(
         seed,
         stroke,
         effort: positive(effort, "effort")?,
+        watch: Default::default(),
     };
     let who = self::agent(agent, "agent")?;
     let frame = frame.0.clone();

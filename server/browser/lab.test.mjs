@@ -5,8 +5,10 @@
 // a vertex of the drawn path, to the bit, and every ball ends where the command says); checks
 // the JSON result downloaded is the command's bytes; shows a bad scene's error as the command
 // says it; plans a shot (picked on the table), cancels a plan, plays the planned shot; plays a
-// stroke of a frame with the referee; and checks the player's part. Fails on any console error,
-// page error or request off the local server.
+// stroke of a frame with the referee; lets the player play a visit (its reasoning checked against
+// the server's JSON, the scores against the referee's), then starts a frame against the player
+// and cancels its visit while it thinks. Fails on any
+// console error, page error or request off the local server.
 //
 //   SNOOKER_BIN=target/ci/snooker node server/browser/lab.test.mjs [--screenshots DIR]
 
@@ -265,17 +267,96 @@ try {
   assert.ok(fr.to_play === 0 || fr.to_play === 1);
   await shot("shotlab-play.png", "#play-panel");
 
-  // 9. The player: built without it (issue 23 not merged), its part says so and offers nothing.
-  const player = await page.evaluate(() => ({
-    player: window.lab.info.player,
-    disabled: document.getElementById("player-visit").disabled,
-    note: document.getElementById("player-note").textContent,
-  }));
-  if (player.player) {
-    throw new Error("this server has the player: the browser test must start a visit of it");
+  // 9. The player's visit on a small open table (3 reds, a low effort, so that it stays quick):
+  // its reasoning shows the stroke chosen and the alternatives with the server's numbers, the
+  // scoreboard follows the referee's verdicts; then a long visit is cancelled while it thinks.
+  const served = new Map();
+  page.on("response", async (r) => {
+    if (!/\/api\/jobs\/\d+\?since=/.test(r.url())) return;
+    try {
+      for (const p of (await r.json()).parts || []) served.set(p.number, p);
+    } catch {
+      // A response the page did not read whole (the test ended): nothing to keep.
+    }
+  });
+  assert.equal(info.player, true, "the server has the player");
+  await page.selectOption("#layout", "open-table");
+  await page.fill("#reds", "3");
+  await page.fill("#seed", "2");
+  await page.click("#load-layout");
+  await page.waitForFunction(() => window.lab.position.frame && window.lab.position.scene.balls.filter((b) => /^red/.test(b.id)).length === 3);
+  await page.selectOption("#replay-speed", "4");
+  await page.fill("#player-effort", "400");
+  await page.fill("#player-seed", "6");
+  await page.click("#player-visit");
+  await page.waitForSelector("#player-chosen", { timeout: 120000 });
+  const shown = await page.evaluate(() => {
+    const head = document.getElementById("player-chosen").textContent;
+    const rows = [...document.querySelectorAll("#player-considered tr[data-row]")].map((tr) => ({
+      row: tr.dataset.row,
+      stroke: tr.cells[1].textContent,
+      numbers: Object.fromEntries([...tr.querySelectorAll("td[data-field]")].map((td) => [td.dataset.field, [Number(td.dataset.value), td.textContent]])),
+    }));
+    return { head, rows };
+  });
+  const number = Number(/^Stroke (\d+)/.exec(shown.head)[1]);
+  for (let i = 0; i < 100 && !served.has(number); i++) await new Promise((r) => setTimeout(r, 50));
+  const part = served.get(number);
+  assert.ok(part, `the server's stroke ${number} was read`);
+  const d = part.decision;
+  const considered = [d.plan, ...d.alternatives];
+  assert.ok(d.alternatives.length >= 1, "the player weighed at least one alternative");
+  assert.equal(shown.rows.length, considered.length, "every stroke considered is listed");
+  assert.equal(shown.rows[0].row, "chosen");
+  shown.rows.forEach((r, i) => {
+    const c = considered[i];
+    for (const f of ["pot_probability", "value"]) {
+      assert.equal(r.numbers[f][0], c[f], `${r.row} ${i}: ${f} is the server's`);
+      assert.equal(r.numbers[f][1], c[f].toFixed(3), `${r.row} ${i}: ${f} shown`);
+    }
+    const what = c.kind === "safety" ? c.ball : c.pot;
+    assert.ok(r.stroke.includes(c.kind) && r.stroke.includes(what), `${r.stroke} names ${c.kind} ${what}`);
+  });
+  assert.ok(shown.head.includes(d.plan.value.toFixed(3)) && shown.head.includes(d.plan.pot_probability.toFixed(3)), shown.head);
+  if (d.cue_ball) assert.ok(shown.head.includes("cue ball in hand placed at"), shown.head);
+  log("the player's reasoning:", shown.head, `(${d.alternatives.length} alternatives)`);
+  await page.waitForFunction(() => /visit over|visit cancelled|visit failed/.test(document.getElementById("status").textContent), null, { timeout: 300000 });
+  await idle();
+  const over = await page.textContent("#status");
+  assert.ok(/visit over/.test(over), over);
+  const strokes = Number(/over: (\d+) strokes/.exec(over)[1]);
+  await page.waitForFunction((n) => document.querySelectorAll("#strokes li").length >= n, strokes);
+  const lines = await page.$$eval("#strokes li", (l) => l.map((x) => x.textContent));
+  const mine = lines.slice(-strokes);
+  for (let k = 1; k <= strokes; k++) {
+    const p = served.get(k);
+    assert.ok(p, `stroke ${k} served`);
+    const sc = p.referee.scores;
+    assert.ok(mine[k - 1].includes(`stroke ${k} (the player)`) && mine[k - 1].endsWith(`Scores ${sc[0]}–${sc[1]}.`), `${mine[k - 1]} vs the referee's ${sc}`);
+    assert.ok(mine[k - 1].startsWith(`Player ${p.player}`));
   }
-  assert.ok(player.disabled && /Waiting for the player/.test(player.note), "the player's part is marked waiting");
-  log("the player: waiting (not in this build)");
+  const sc = served.get(strokes).referee.scores;
+  const board = await page.textContent("#scoreboard");
+  assert.ok(board.includes(`Player 0: ${sc[0]} · Player 1: ${sc[1]}`) || board.includes(`${sc[0]}–${sc[1]}`), `${board} vs ${sc}`);
+  log(`the player's visit: ${strokes} strokes; ${over}; ${board}`);
+  await shot("shotlab-player.png", "#play-panel");
+
+  // A frame against the player, who takes the side now to play: its visit starts by itself
+  // (at the effort limit, so that it is still thinking when cancelled).
+  await page.fill("#player-effort", String(info.limits.play_effort));
+  const toPlay = await page.evaluate(() => window.lab.position.frame.to_play);
+  await page.selectOption("#player-side", String(toPlay));
+  await page.check("#vs-player");
+  await page.waitForFunction(() => /running: [1-9]/.test(document.getElementById("player-status").textContent), null, { timeout: 60000 });
+  const jobId = await page.evaluate(() => window.lab.player.job);
+  await page.click("#player-cancel");
+  await page.waitForFunction(() => /visit cancelled/.test(document.getElementById("status").textContent), null, { timeout: 60000 });
+  const job = await page.evaluate(async (id) => (await fetch(`/api/jobs/${id}`)).json(), jobId);
+  assert.equal(job.state, "cancelled");
+  assert.ok(job.shots < info.limits.play_effort, `stopped after ${job.shots} shots`);
+  const later = await page.evaluate(async (id) => { await new Promise((r) => setTimeout(r, 500)); return (await fetch(`/api/jobs/${id}`)).json(); }, jobId);
+  assert.equal(later.shots, job.shots, "no shot simulated after the cancel");
+  log(await page.textContent("#status"));
 
   assert.deepEqual(problems, [], "no console error, no page error, no request off the local server");
   log("all checks passed");

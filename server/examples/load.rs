@@ -11,6 +11,15 @@
 #[path = "../tests/common/load.rs"]
 mod load;
 
+/// kB figures as MB, listed.
+fn mb(kb: &[u64]) -> String {
+    let list: Vec<String> = kb
+        .iter()
+        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
+        .collect();
+    list.join(", ")
+}
+
 fn arg(n: usize, default: usize) -> usize {
     std::env::args()
         .nth(n)
@@ -24,12 +33,15 @@ async fn main() -> std::process::ExitCode {
     println!(
         "{rounds} rounds of {clients} simulations and {plans} plans ({samples} samples) at once"
     );
+    // SHOTLAB_TRIM=1: the allocator's free memory handed back after each round.
+    let trim = std::env::var("SHOTLAB_TRIM").is_ok_and(|v| v == "1");
     let mut r = load::run(
         snooker_server::Limits::default(),
         clients,
         plans,
         samples,
         rounds,
+        trim,
     )
     .await;
     let (sim_max, plan_max) = (
@@ -50,12 +62,8 @@ async fn main() -> std::process::ExitCode {
         load::quantile(&mut r.plan_times, 0.95),
         plan_max
     );
-    let mb: Vec<String> = r
-        .rss_kb
-        .iter()
-        .map(|k| format!("{:.1}", *k as f64 / 1024.0))
-        .collect();
-    println!("resident memory after each round, MB: {}", mb.join(", "));
+    println!("resident memory after each round, MB: {}", mb(&r.rss_kb));
+    println!("heap live after each round, MB: {}", mb(&r.live_kb));
     println!("wall time {:.1} s; errors: {}", r.wall, r.errors.len());
     for e in r.errors.iter().take(10) {
         println!("  {e}");

@@ -5,7 +5,7 @@ use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 
 /// The files served: path, content type, bytes.
-const FILES: [(&str, &str, &str); 9] = [
+const FILES: [(&str, &str, &str); 10] = [
     (
         "/",
         "text/html; charset=utf-8",
@@ -45,6 +45,11 @@ const FILES: [(&str, &str, &str); 9] = [
         "/play.js",
         "text/javascript; charset=utf-8",
         include_str!("../web/play.js"),
+    ),
+    (
+        "/player.js",
+        "text/javascript; charset=utf-8",
+        include_str!("../web/player.js"),
     ),
     (
         "/favicon.svg",

@@ -123,18 +123,36 @@ fn finish(
 /// Reads a frame given as a JSON object with the frame file's keys (`snooker referee`'s
 /// reader, as Python's dicts are read).
 pub fn frame(value: &Value, limits: &Limits) -> Result<FrameFile, ApiError> {
-    let mut f = snooker_rules::from_value(value, FRAME)?;
-    ball_count(f.scene.setup.balls.len(), FRAME, limits)?;
+    let f = snooker_rules::from_value(value, FRAME)?;
+    frame_bounded(f, FRAME, limits)
+}
+
+/// Holds a frame read to the server's limits: its balls counted, its simulations (the scene's
+/// and the frame's own, which every stroke the player tries is simulated with) bounded.
+fn frame_bounded(mut f: FrameFile, file: &str, limits: &Limits) -> Result<FrameFile, ApiError> {
+    ball_count(f.scene.setup.balls.len(), file, limits)?;
     f.scene.options = bounded(f.scene.options, limits);
+    let options = bounded(*f.frame.options(), limits);
+    if options != *f.frame.options() {
+        let g = &f.frame;
+        f.frame = snooker_rules::Frame::new(
+            g.name(),
+            g.table().clone(),
+            *g.params(),
+            *g.models(),
+            options,
+            g.balls().to_vec(),
+            *g.state(),
+        )
+        .map_err(|e| ApiError::from(f.locate(&e)))?;
+    }
     Ok(f)
 }
 
 /// Reads a frame given as TOML text (a frame file, or a play log line's `frame`).
 pub fn frame_toml(text: &str, file: &str, limits: &Limits) -> Result<FrameFile, ApiError> {
-    let mut f = snooker_rules::parse(text, file)?;
-    ball_count(f.scene.setup.balls.len(), file, limits)?;
-    f.scene.options = bounded(f.scene.options, limits);
-    Ok(f)
+    let f = snooker_rules::parse(text, file)?;
+    frame_bounded(f, file, limits)
 }
 
 /// A frame as the page holds it: the frame file's keys as one JSON object (the file

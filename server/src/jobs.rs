@@ -1,12 +1,19 @@
 //! Long work (a plan, the player thinking) as jobs: started at once with an id, run when one
 //! of the server's few heavy slots is free (a semaphore), watched for progress (shots
 //! simulated so far), cancelled on request or when it outlives its wall time (a [`Cancel`]
-//! flag the planner checks before every shot), and kept a while for its result.
+//! flag the planner checks before every shot), and kept a while for its result. A job may
+//! report parts of its answer as it goes (the player's strokes, one by one): a poll asks for
+//! the parts from the first it has not seen.
+//!
+//! Answers are kept as JSON text (a fraction of the memory of a JSON tree, written to each poll
+//! as it is), and the finished jobs kept are bounded both in number and in the bytes of their
+//! answers ([`Limits::kept_jobs`], [`Limits::kept_bytes`]): the oldest are forgotten first.
 
 use crate::error::ApiError;
 use crate::limits::Limits;
 use serde::Serialize;
 use serde_json::Value;
+use serde_json::value::RawValue;
 use snooker_planner::Cancel;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
@@ -26,6 +33,12 @@ impl Progress for snooker_planner::Problem {
     }
 }
 
+impl Progress for snooker_player::Watch {
+    fn shots(&self) -> u64 {
+        snooker_player::Watch::shots(self)
+    }
+}
+
 impl Progress for AtomicU64 {
     fn shots(&self) -> u64 {
         self.load(Ordering::Relaxed)
@@ -37,7 +50,7 @@ impl Progress for AtomicU64 {
 enum State {
     Queued,
     Running,
-    Done(Arc<Value>),
+    Done(Arc<RawValue>),
     Failed(ApiError),
     Cancelled(String),
 }
@@ -57,6 +70,8 @@ pub struct Job {
     done_shots: AtomicU64,
     note: Mutex<String>,
     cancel_reason: Mutex<Option<String>>,
+    parts: Mutex<Vec<Arc<RawValue>>>,
+    bytes: AtomicUsize,
 }
 
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
@@ -83,6 +98,22 @@ impl Job {
         list.clear();
     }
 
+    /// Reports a part of the answer (a stroke played), for the polls to come.
+    pub fn report(&self, part: Value) -> Result<(), ApiError> {
+        let raw = text(&part)?;
+        lock(&self.parts).push(raw);
+        Ok(())
+    }
+
+    /// Bytes of the answer and the parts kept (their JSON text).
+    pub fn bytes(&self) -> usize {
+        self.bytes.load(Ordering::Relaxed)
+            + lock(&self.parts)
+                .iter()
+                .map(|p| p.get().len())
+                .sum::<usize>()
+    }
+
     /// A line saying what the job is doing now.
     pub fn set_note(&self, note: impl Into<String>) {
         *lock(&self.note) = note.into();
@@ -104,8 +135,14 @@ impl Job {
         )
     }
 
-    /// The job as the API reports it.
+    /// The job as the API reports it (no parts).
     pub fn status(&self) -> JobStatus {
+        self.status_since(None)
+    }
+
+    /// The job as the API reports it, with the parts reported from number `since` (from 0) on
+    /// when asked for.
+    pub fn status_since(&self, since: Option<usize>) -> JobStatus {
         let state = lock(&self.state).clone();
         let started = *lock(&self.started);
         let (name, result, error, reason) = match state {
@@ -114,6 +151,11 @@ impl Job {
             State::Done(v) => ("done", Some(v), None, None),
             State::Failed(e) => ("failed", None, Some(e), None),
             State::Cancelled(r) => ("cancelled", None, None, Some(r)),
+        };
+        let (reported, parts) = {
+            let all = lock(&self.parts);
+            let parts = since.map(|k| all.get(k..).unwrap_or_default().to_vec());
+            (all.len(), parts)
         };
         JobStatus {
             id: self.id,
@@ -128,6 +170,8 @@ impl Job {
             result,
             error,
             reason,
+            reported,
+            parts,
         }
     }
 }
@@ -151,18 +195,44 @@ pub struct JobStatus {
     pub elapsed: f64,
     /// The answer, once done.
     #[serde(skip_serializing_if = "Option::is_none", serialize_with = "shared")]
-    pub result: Option<Arc<Value>>,
+    pub result: Option<Arc<RawValue>>,
     /// Why it failed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ApiError>,
     /// Why it was cancelled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
+    /// Parts of the answer reported so far (strokes played).
+    pub reported: usize,
+    /// The parts from the one asked for (`?since=N`) on, when asked for.
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "shared_parts"
+    )]
+    pub parts: Option<Vec<Arc<RawValue>>>,
 }
 
 /// A kept result, written as the value it holds (shared, not copied, between polls).
-fn shared<S: serde::Serializer>(v: &Option<Arc<Value>>, s: S) -> Result<S::Ok, S::Error> {
+fn shared<S: serde::Serializer>(v: &Option<Arc<RawValue>>, s: S) -> Result<S::Ok, S::Error> {
     v.as_deref().serialize(s)
+}
+
+/// `v` as JSON text, to keep.
+fn text(v: &Value) -> Result<Arc<RawValue>, ApiError> {
+    serde_json::value::to_raw_value(v)
+        .map(Arc::from)
+        .map_err(|e| ApiError::internal(format!("the answer as JSON: {e}")))
+}
+
+/// Kept parts, written as the values they hold.
+fn shared_parts<S: serde::Serializer>(
+    v: &Option<Vec<Arc<RawValue>>>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(parts) => s.collect_seq(parts.iter().map(|p| p.as_ref())),
+        None => s.serialize_none(),
+    }
 }
 
 /// The server's jobs.
@@ -221,6 +291,8 @@ impl Jobs {
             done_shots: AtomicU64::new(0),
             note: Mutex::new(String::new()),
             cancel_reason: Mutex::new(None),
+            parts: Mutex::new(Vec::new()),
+            bytes: AtomicUsize::new(0),
         });
         self.keep(job.clone());
         let jobs = self.clone();
@@ -257,8 +329,11 @@ impl Jobs {
             let state = if run.cancel.is_cancelled() {
                 State::Cancelled(lock(&run.cancel_reason).clone().unwrap_or_default())
             } else {
-                match out {
-                    Ok(Ok(v)) => State::Done(Arc::new(v)),
+                match out.map(|r| r.and_then(|v| text(&v))) {
+                    Ok(Ok(v)) => {
+                        run.bytes.store(v.get().len(), Ordering::Relaxed);
+                        State::Done(v)
+                    }
                     Ok(Err(e)) => State::Failed(e),
                     Err(e) => State::Failed(ApiError::internal(format!("the job stopped: {e}"))),
                 }
@@ -268,18 +343,30 @@ impl Jobs {
         Ok(job)
     }
 
-    /// Keeps `job`, forgetting the oldest finished jobs beyond the limit.
+    /// Keeps `job`, forgetting the oldest finished jobs beyond the limits: more than
+    /// [`Limits::kept_jobs`] of them, or answers of more than [`Limits::kept_bytes`] in all.
     fn keep(&self, job: Arc<Job>) {
         let mut jobs = lock(&self.jobs);
         jobs.insert(job.id, job);
-        let finished: Vec<u64> = jobs
+        // Newest first: keep while both limits allow, forget the rest.
+        let finished: Vec<(u64, usize)> = jobs
             .iter()
+            .rev()
             .filter(|(_, j)| j.finished())
-            .map(|(id, _)| *id)
+            .map(|(id, j)| (*id, j.bytes()))
             .collect();
-        let excess = finished.len().saturating_sub(self.limits.kept_jobs);
-        for id in finished.into_iter().take(excess) {
-            jobs.remove(&id);
+        let mut bytes = 0;
+        for (k, (id, b)) in finished.into_iter().enumerate() {
+            bytes += b;
+            if k >= self.limits.kept_jobs || bytes > self.limits.kept_bytes {
+                jobs.remove(&id);
+            }
         }
+    }
+
+    /// Jobs kept (finished or not) and the bytes of their answers.
+    pub fn kept(&self) -> (usize, usize) {
+        let jobs = lock(&self.jobs);
+        (jobs.len(), jobs.values().map(|j| j.bytes()).sum())
     }
 }

@@ -1,13 +1,15 @@
 //! The shot lab: a local web server with one page and a small JSON API over the engine, scene,
-//! planner and rules crates, so that a person can set up a position, strike, ask for the shot
-//! and play a frame. No physics here or in the page: every number comes from those crates.
+//! planner, rules and player crates, so that a person can set up a position, strike, ask for
+//! the shot, play a frame and play against the player. No physics here or in the page: every
+//! number comes from those crates.
 //!
 //! - [`router`] is the whole application (an axum `Router`); [`serve`] runs it on a listener
 //!   until a shutdown signal. The `snooker serve` command binds it to the loopback address.
 //! - Requests are read by the scene and rules crates exactly as files are ([`input`]): bad
 //!   input is HTTP 400 with `{file, key, reason, message}` ([`error`]), the message the
 //!   command line prints. Everything a request may cost is bounded ([`limits`]).
-//! - Long work (a plan) is a job ([`jobs`]) with progress and cancellation.
+//! - Long work (a plan, the player's visit) is a job ([`jobs`]) with progress and
+//!   cancellation.
 //! - The page ([`assets`]) is built into the binary and loads nothing from elsewhere.
 //!
 //! The API (JSON in and out; a scene is an object with the scene file's keys, a frame the
@@ -26,7 +28,8 @@
 //! | `POST /api/download/recording` | `{scene}` | the Rerun recording (`.rrd`) |
 //! | `POST /api/plan` | [`plan::PlanRequest`] | a job ([`jobs::JobStatus`]), 202 |
 //! | `POST /api/frame/stroke` | `{frame, rate?}` | the referee's result, the paths, the next frame |
-//! | `GET /api/jobs/{id}` | | the job: state, shots so far, result |
+//! | `POST /api/play` | [`play::PlayRequest`] | a job (202): the player's visit, stroke by stroke |
+//! | `GET /api/jobs/{id}?since=N` | | the job: state, shots so far, result; the parts from N |
 //! | `POST /api/jobs/{id}/cancel` | | the job, cancelled |
 
 pub mod assets;
@@ -37,6 +40,7 @@ pub mod jobs;
 pub mod limits;
 pub mod paths;
 pub mod plan;
+pub mod play;
 pub mod position;
 pub mod record;
 pub mod referee;
@@ -118,6 +122,7 @@ pub fn router(config: Config) -> Router {
         .route("/api/download/recording", post(download_recording))
         .route("/api/plan", post(plan))
         .route("/api/frame/stroke", post(frame_stroke))
+        .route("/api/play", post(play))
         .route("/api/jobs/{id}", get(job))
         .route("/api/jobs/{id}/cancel", post(job_cancel))
         .fallback(get(page))
@@ -156,6 +161,9 @@ struct LimitsView {
     balls: usize,
     plan_samples: usize,
     plan_alternatives: usize,
+    play_effort: u64,
+    play_effort_default: u64,
+    play_strokes: usize,
     job_seconds: f64,
 }
 
@@ -164,11 +172,14 @@ async fn info(State(lab): Shared) -> Json<Info> {
         version: env!("CARGO_PKG_VERSION"),
         layouts: position::layouts(),
         recordings: lab.recorder.is_some(),
-        player: false,
+        player: true,
         limits: LimitsView {
             balls: lab.limits.balls,
             plan_samples: lab.limits.plan_samples,
             plan_alternatives: lab.limits.plan_alternatives,
+            play_effort: lab.limits.play_effort,
+            play_effort_default: play::DEFAULT_EFFORT.min(lab.limits.play_effort),
+            play_strokes: lab.limits.play_strokes,
             job_seconds: lab.limits.job_time.as_secs_f64(),
         },
     })
@@ -364,6 +375,16 @@ async fn plan(
     Ok((StatusCode::ACCEPTED, Json(job.status())))
 }
 
+async fn play(
+    State(lab): Shared,
+    Body(req): Body<play::PlayRequest>,
+) -> Result<(StatusCode, Json<JobStatus>), ApiError> {
+    let limits = lab.limits;
+    let checked = lab.light(move || play::check(req, &limits)).await?;
+    let job = lab.jobs.spawn("play", move |job| play::run(checked, job))?;
+    Ok((StatusCode::ACCEPTED, Json(job.status())))
+}
+
 async fn frame_stroke(
     State(lab): Shared,
     Body(req): Body<FrameReq>,
@@ -377,12 +398,24 @@ async fn frame_stroke(
     .map(Json)
 }
 
-async fn job(State(lab): Shared, Path(id): Path<u64>) -> Result<Json<JobStatus>, ApiError> {
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct JobQuery {
+    #[serde(default)]
+    since: Option<usize>,
+}
+
+async fn job(
+    State(lab): Shared,
+    Path(id): Path<u64>,
+    query: Result<Query<JobQuery>, axum::extract::rejection::QueryRejection>,
+) -> Result<Json<JobStatus>, ApiError> {
+    let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
     let job = lab
         .jobs
         .get(id)
         .ok_or_else(|| ApiError::not_found(format!("no job {id}")))?;
-    Ok(Json(job.status()))
+    Ok(Json(job.status_since(q.since)))
 }
 
 async fn job_cancel(State(lab): Shared, Path(id): Path<u64>) -> Result<Json<JobStatus>, ApiError> {

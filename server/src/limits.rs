@@ -39,6 +39,10 @@ pub struct Limits {
     pub job_time: Duration,
     /// Finished jobs kept for their results (the oldest are forgotten first).
     pub kept_jobs: usize,
+    /// Bytes of the results (JSON text) of the finished jobs kept: past it the oldest are
+    /// forgotten first (a plan's answer is about 0.1 MB, a stroke of the player's about
+    /// 0.12 MB, a visit up to [`Limits::play_strokes`] of them).
+    pub kept_bytes: usize,
     /// Light requests (simulate, referee, checks) computed at once; more wait their turn.
     pub light_jobs: usize,
 }
@@ -61,6 +65,7 @@ impl Default for Limits {
             queued_jobs: 16,
             job_time: Duration::from_secs(120),
             kept_jobs: 64,
+            kept_bytes: 32 * 1024 * 1024,
             light_jobs: 8,
         }
     }

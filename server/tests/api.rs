@@ -285,6 +285,20 @@ async fn wait(app: &Router, id: u64) -> Value {
     panic!("job {id} did not end");
 }
 
+/// Cancels job `id` once it has simulated a shot, and waits for its end.
+async fn cancel_when_running(app: &Router, id: u64) -> Value {
+    loop {
+        let (_, v) = call(app, "GET", &format!("/api/jobs/{id}"), None).await;
+        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let (s, _) = call(app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
+    assert_eq!(s, StatusCode::OK);
+    wait(app, id).await
+}
+
 const CH7: &str = include_str!("../../scenes/chapter7-example.toml");
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -313,17 +327,7 @@ async fn a_plan_is_a_job_that_replays_and_can_be_cancelled() {
     // A large plan, cancelled: it stops, saying so, with the shots it had simulated.
     let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
     let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
-    let id = v["id"].as_u64().unwrap();
-    loop {
-        let (_, v) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
-        if v["shots"].as_u64().unwrap() > 0 || v["state"] != "queued" && v["state"] != "running" {
-            break;
-        }
-        tokio::time::sleep(Duration::from_millis(10)).await;
-    }
-    let (s, _) = call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
-    assert_eq!(s, StatusCode::OK);
-    let end = wait(&app, id).await;
+    let end = cancel_when_running(&app, v["id"].as_u64().unwrap()).await;
     assert_eq!(end["state"], "cancelled", "{end}");
     assert_eq!(end["reason"], "cancelled on request");
 }
@@ -346,6 +350,38 @@ async fn a_job_outliving_its_wall_time_is_cancelled() {
         end["reason"].as_str().unwrap().contains("wall-time limit"),
         "{end}"
     );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn finished_jobs_are_kept_within_the_byte_limit() {
+    // Room for two and a half plan answers (all the same size: the same plan).
+    let probe = app();
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 8, "alternatives": 0});
+    let (_, v) = call(&probe, "POST", "/api/plan", Some(req.clone())).await;
+    let done = wait(&probe, v["id"].as_u64().unwrap()).await;
+    let size = done["result"].to_string().len();
+    let app = router(Config {
+        limits: Limits {
+            kept_bytes: 2 * size + size / 2,
+            ..Limits::default()
+        },
+        recorder: None,
+    });
+    let mut ids = Vec::new();
+    for _ in 0..4 {
+        let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+        assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+        let id = v["id"].as_u64().unwrap();
+        assert_eq!(wait(&app, id).await["state"], "done");
+        ids.push(id);
+    }
+    let mut kept = Vec::new();
+    for id in &ids {
+        let (s, _) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
+        kept.push(s == StatusCode::OK);
+    }
+    // The fourth start found three answers kept, over the limit, and forgot the oldest.
+    assert_eq!(kept, [false, true, true, true], "{ids:?}");
 }
 
 #[tokio::test]
@@ -386,4 +422,127 @@ async fn a_stroke_of_a_frame_is_judged_by_the_rules_crate() {
     .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(v["key"], "cue");
+}
+
+/// A frame for a request: a position's scene with its `[frame]` table.
+fn frame_of(pos: &Value) -> Value {
+    let mut frame = pos["scene"].clone();
+    frame["frame"] = pos["frame"].clone();
+    frame
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_players_visit_is_the_player_crates() {
+    let app = app();
+    let (_, pos) = call(&app, "GET", "/api/layouts/open-table?reds=3&seed=4", None).await;
+    let frame = frame_of(&pos);
+    let req = json!({"frame": frame, "effort": 300, "seed": 5, "noise": "standard", "strokes": 3});
+    let (s, v) = call(&app, "POST", "/api/play", Some(req)).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    assert_eq!(v["kind"], "play");
+    let id = v["id"].as_u64().unwrap();
+    let done = wait(&app, id).await;
+    assert_eq!(done["state"], "done", "{done}");
+    let (_, all) = call(&app, "GET", &format!("/api/jobs/{id}?since=0"), None).await;
+    let parts = all["parts"].as_array().unwrap();
+    // The player crate on the same frame (read as `snooker play` reads it), seed and effort.
+    let file = snooker_rules::from_value(&frame, "frame").unwrap();
+    let opts = snooker_player::PlayOptions {
+        noise: snooker_planner::Noise::STANDARD,
+        seed: 5,
+        effort: 300,
+        until: snooker_player::Until::Visit,
+        max_strokes: 3,
+        ..Default::default()
+    };
+    let game = snooker_player::play(
+        &file.frame,
+        [&snooker_player::Player, &snooker_player::Player],
+        &opts,
+        |_| {},
+    )
+    .unwrap();
+    assert!(!parts.is_empty());
+    assert_eq!(parts.len(), game.strokes.len());
+    assert_eq!(all["reported"], parts.len());
+    assert!(
+        !parts[0]["decision"]["alternatives"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
+    let r = &done["result"];
+    assert_eq!(r["strokes"], game.strokes.len());
+    assert_eq!(r["seed"], 5);
+    assert_eq!(r["effort"], 300);
+    let mut shots = 0;
+    for (part, s) in parts.iter().zip(&game.strokes) {
+        let d = &part["decision"];
+        let want = serde_json::to_value(snooker_server::play::DecisionView::of(&s.decision, "cue"))
+            .unwrap();
+        assert_eq!(*d, want, "stroke {}", s.number);
+        // Decision-shaped: the stroke chosen and what else was considered, with numbers.
+        assert!(d["plan"]["value"].is_number() && d["plan"]["pot_probability"].is_number());
+        assert!(d["alternatives"].is_array());
+        let referee =
+            serde_json::to_value(s.verdict.report::<snooker_scene::result::ShotRecord>(None))
+                .unwrap();
+        assert_eq!(part["referee"], referee);
+        let cue = s.frame.cue_index().unwrap();
+        let end = s.shot.final_states()[cue].pos;
+        let fin = &part["shot"]["result"]["final"]["cue"];
+        if fin["motion"] != "pocketed" {
+            assert_eq!(fin["pos"][0], end.x);
+            assert_eq!(fin["pos"][1], end.y);
+        }
+        shots += s.decision.shots;
+    }
+    // The progress counted is the shots the decisions simulated.
+    assert_eq!(done["shots"], shots);
+    assert_eq!(r["shots_simulated"], shots);
+    let last = game.strokes.last().unwrap();
+    assert_eq!(r["scores"], json!(last.verdict.scores));
+    // Polling from a later part gives only the rest.
+    let (_, rest) = call(&app, "GET", &format!("/api/jobs/{id}?since=1"), None).await;
+    assert_eq!(rest["parts"].as_array().unwrap().len(), parts.len() - 1);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_play_request_is_checked_and_its_job_can_be_cancelled() {
+    let app = app();
+    let (_, pos) = call(&app, "GET", "/api/layouts/open-table?reds=6&seed=1", None).await;
+    let frame = frame_of(&pos);
+    // A bad frame: the message `snooker referee` and `snooker play` give, the key named.
+    let mut bad = frame.clone();
+    bad["frame"]["to_play"] = json!(3);
+    let want = snooker_rules::from_value(&bad, "frame").unwrap_err();
+    let (s, v) = call(&app, "POST", "/api/play", Some(json!({"frame": bad}))).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+    assert_eq!(v["key"], want.key.as_str());
+    assert_eq!(v["message"], want.to_string());
+    // The request's own keys, held to the server's limits.
+    let most = Limits::default().play_effort;
+    for (req, key) in [
+        (json!({"frame": frame, "effort": most + 1}), "effort"),
+        (json!({"frame": frame, "effort": 0}), "effort"),
+        (json!({"frame": frame, "noise": "loud"}), "noise"),
+        (json!({"frame": frame, "strokes": 1000}), "strokes"),
+        (json!({"frame": frame, "think": true}), ""),
+    ] {
+        let (s, v) = call(&app, "POST", "/api/play", Some(req)).await;
+        assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+        assert_eq!(v["file"], "request", "{v}");
+        if !key.is_empty() {
+            assert_eq!(v["key"], key, "{v}");
+        }
+    }
+    // A long visit, cancelled while the player thinks: it stops, saying so.
+    let req = json!({"frame": frame, "effort": most});
+    let (s, v) = call(&app, "POST", "/api/play", Some(req)).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    let end = cancel_when_running(&app, v["id"].as_u64().unwrap()).await;
+    assert_eq!(end["state"], "cancelled", "{end}");
+    assert_eq!(end["reason"], "cancelled on request");
+    // It stopped with less than one stroke's budget simulated: the player saw the flag.
+    assert!(end["shots"].as_u64().unwrap() < most, "{end}");
 }

@@ -60,6 +60,11 @@ export async function download(path, body) {
   return { name, size: blob.size };
 }
 
+// Asks for job `id` to be cancelled (it ends soon after, saying so).
+export async function cancelJob(id) {
+  return post(`/api/jobs/${id}/cancel`, {});
+}
+
 // Polls job `id` until it ends, calling `onProgress(status)` on every poll.
 export async function waitJob(id, onProgress, intervalMs = 150) {
   for (;;) {

@@ -7,6 +7,7 @@ import { Table, animate } from "./table.js";
 import { StrikeControls } from "./strike.js";
 import { PlanPanel } from "./plan.js";
 import { PlayPanel } from "./play.js";
+import { PlayerPanel } from "./player.js";
 
 const $ = (id) => document.getElementById(id);
 
@@ -21,6 +22,7 @@ class Lab {
     this.strikes = new StrikeControls(this);
     this.plan = new PlanPanel(this);
     this.play = new PlayPanel(this);
+    this.player = new PlayerPanel(this);
     this.animating = false;
   }
 
@@ -73,6 +75,7 @@ class Lab {
     this.strikes.show();
     this.plan.setPosition(position);
     this.play.setPosition(position);
+    this.player.setPosition(position);
     $("position-about").textContent = about;
     $("events").replaceChildren();
     $("summary").textContent = "";
@@ -232,6 +235,7 @@ class Lab {
     $("dl-recording").addEventListener("click", () => this.download("recording"));
     this.plan.wire();
     this.play.wire();
+    this.player.wire();
   }
 
   async start() {
@@ -251,7 +255,7 @@ class Lab {
     );
     sel.value = "cut-30";
     $("open-table-opts").hidden = true;
-    this.play.setInfo(this.info);
+    this.player.setInfo(this.info);
     await this.loadLayout("cut-30");
     document.body.dataset.ready = "true";
   }

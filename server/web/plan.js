@@ -136,11 +136,7 @@ export class PlanPanel {
 
   async cancel() {
     if (this.job == null) return;
-    try {
-      await api.post(`/api/jobs/${this.job}/cancel`, {});
-    } catch (e) {
-      this.lab.fail(e);
-    }
+    await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
   }
 
   // Draws the plan: the best shot's paths, the alternatives' cue ball paths, the spread.

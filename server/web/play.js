@@ -1,8 +1,7 @@
 // The Play panel: a frame of snooker played stroke by stroke with the strike set by hand; the
 // rules crate's referee judges each stroke (verdict, foul, points, scores, who plays next) and
-// gives the frame that follows. The player (issue 23's crate) plays its visits here once the
-// server is built with it: until then its part is shown as waiting, and nothing stands in for
-// its reasoning.
+// gives the frame that follows. The player's visits (player.js) are shown here too: in a frame
+// against the player, its turn comes after a hand stroke that gives it the table.
 
 import * as api from "./api.js";
 
@@ -12,22 +11,6 @@ export class PlayPanel {
   constructor(lab) {
     this.lab = lab;
     this.strokes = 0;
-  }
-
-  setInfo(info) {
-    const box = $("player-box");
-    if (info.player) {
-      box.classList.remove("waiting");
-      $("player-visit").disabled = false;
-      $("player-note").textContent = "";
-    } else {
-      box.dataset.waiting = "true";
-      $("player-visit").disabled = true;
-      $("player-note").textContent =
-        "Waiting for the player (issue 23): this server is built without it. Its visits, " +
-        "the stroke it chooses and what else it considered will show here once it lands; " +
-        "until then play both sides by hand with the referee below.";
-    }
   }
 
   setPosition(position) {
@@ -77,6 +60,7 @@ export class PlayPanel {
           lab.setPosition(v.next, "the frame after the stroke");
           // The stroke's paths stay drawn over the position it left.
           lab.table.drawPaths(v.shot.paths);
+          lab.player.takeTurn();
         } else this.over(v.referee);
       });
       lab.status(v.referee.legal ? "legal stroke" : `foul: ${v.referee.foul.reason}`);
@@ -87,7 +71,8 @@ export class PlayPanel {
     }
   }
 
-  showVerdict(r) {
+  // The referee's verdict `r` of a stroke, said of `who` (the hand stroke's when not given).
+  showVerdict(r, who = null) {
     const d = $("verdict");
     const p = document.createElement("p");
     p.id = "verdict-line";
@@ -97,6 +82,7 @@ export class PlayPanel {
     p.textContent = r.legal
       ? `Legal: ${first}, ${potted}, ${r.points} points. Scores ${r.scores[0]}–${r.scores[1]}.`
       : `Foul (${r.foul.reason}, ${r.foul.points} to the opponent): ${first}, ${potted}. Scores ${r.scores[0]}–${r.scores[1]}.`;
+    if (who) p.textContent = `${who}: ${p.textContent}`;
     d.replaceChildren(p);
     const li = document.createElement("li");
     li.textContent = p.textContent;
@@ -113,7 +99,8 @@ export class PlayPanel {
       this.strokes = 0;
       $("strokes").replaceChildren();
       $("verdict").replaceChildren();
-      this.lab.loadLayout("break-off");
+      $("player-reasoning").replaceChildren();
+      this.lab.loadLayout("break-off").then(() => this.lab.player.takeTurn());
     });
     $("play-stroke").addEventListener("click", () => this.stroke());
   }

@@ -287,6 +287,7 @@ pub fn run(args: Args) -> ExitCode {
             Until::Visit
         },
         max_strokes: args.max_strokes,
+        watch: Default::default(),
     };
     let pool = match rayon::ThreadPoolBuilder::new()
         .num_threads(args.threads.unwrap_or(0))

@@ -1,5 +1,5 @@
 //! `snooker serve`: the shot lab (the `snooker-server` crate) on a local address: one page and
-//! a small JSON API over the engine, scene, planner and rules crates. The recordings the page
+//! a small JSON API over the engine, scene, planner, rules and player crates. The recordings the page
 //! downloads are made by this crate's own exporter ([`crate::record`]), handed to the server as
 //! a [`snooker_server::Recorder`], so that the server does not depend on this crate.
 

@@ -2,6 +2,73 @@
 //! The load driver shared by the load example (figures) and the load test (no errors, memory
 //! flat): the lab served on a loopback port in this process, and rounds of concurrent
 //! clients, each on its own connection, asking for simulations and plans.
+//!
+//! The process's allocations are counted ([`Counting`], this binary's global allocator), so
+//! that a run tells the heap the program holds (live bytes) apart from the resident memory the
+//! allocator keeps from the system: a leak grows the first, allocator retention only the second.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicI64, Ordering};
+
+/// The system allocator, counting the bytes live (allocated and not yet freed).
+pub struct Counting;
+
+static LIVE: AtomicI64 = AtomicI64::new(0);
+
+// SAFETY: every call is passed to the system allocator unchanged; only a counter is added.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc(layout) };
+        if !p.is_null() {
+            LIVE.fetch_add(layout.size() as i64, Ordering::Relaxed);
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc_zeroed(layout) };
+        if !p.is_null() {
+            LIVE.fetch_add(layout.size() as i64, Ordering::Relaxed);
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) };
+        LIVE.fetch_sub(layout.size() as i64, Ordering::Relaxed);
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if !p.is_null() {
+            LIVE.fetch_add(new_size as i64 - layout.size() as i64, Ordering::Relaxed);
+        }
+        p
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Bytes allocated and not freed, kB.
+pub fn live_kb() -> u64 {
+    (LIVE.load(Ordering::Relaxed).max(0) / 1024) as u64
+}
+
+/// Hands the allocator's free memory back to the system (glibc's `malloc_trim`), so that the
+/// resident size measured next is what the program holds plus what cannot be returned.
+pub fn trim() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    {
+        unsafe extern "C" {
+            fn malloc_trim(pad: usize) -> i32;
+        }
+        // SAFETY: malloc_trim takes a size and only releases free memory.
+        unsafe {
+            malloc_trim(0);
+        }
+    }
+}
 
 use http_body_util::{BodyExt, Full};
 use hyper::body::Bytes;
@@ -25,6 +92,8 @@ pub struct Report {
     pub plan_times: Vec<f64>,
     /// Resident memory of the process after each round, kB.
     pub rss_kb: Vec<u64>,
+    /// Heap live (allocated, not freed) after each round, kB.
+    pub live_kb: Vec<u64>,
     /// Wall time of the run, s.
     pub wall: f64,
 }
@@ -140,13 +209,15 @@ async fn plan(addr: SocketAddr, samples: usize) -> Result<f64, String> {
 }
 
 /// Serves the lab with `limits` on a loopback port and runs `rounds` rounds of `clients`
-/// concurrent simulations and `plans` concurrent plans of `samples` samples each.
+/// concurrent simulations and `plans` concurrent plans of `samples` samples each; with `trim`,
+/// the allocator's free memory is handed back to the system after each round.
 pub async fn run(
     limits: Limits,
     clients: usize,
     plans: usize,
     samples: usize,
     rounds: usize,
+    trim: bool,
 ) -> Report {
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
         .await
@@ -195,7 +266,11 @@ pub async fn run(
                 Err(e) => report.errors.push(e.to_string()),
             }
         }
+        if trim {
+            self::trim();
+        }
         report.rss_kb.push(rss_kb());
+        report.live_kb.push(live_kb());
     }
     report.wall = start.elapsed().as_secs_f64();
     server.abort();
