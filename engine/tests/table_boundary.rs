@@ -274,7 +274,7 @@ fn a_ball_behind_a_corner_fall_is_off_the_cloth_not_in_the_mouth() {
         state.vel = Vec3::new(vel[0], vel[1], vel[2]);
         let setup = Setup {
             table: table.clone(),
-            params: p.clone(),
+            params: p,
             models: Models::default(),
             balls: vec![ball("red", state)],
         };

@@ -221,7 +221,7 @@ pub fn ring_entries(
 /// out is returned unchanged, bit for bit.
 fn polished(gap: impl Fn(f64) -> (f64, f64), t: f64, end: f64) -> f64 {
     let (g0, _) = gap(t);
-    if !(g0.abs() > VERIFY_TOL) {
+    if g0.is_nan() || g0.abs() <= VERIFY_TOL {
         return t;
     }
     let (mut best, mut best_gap) = (t, g0.abs());
@@ -234,7 +234,7 @@ fn polished(gap: impl Fn(f64) -> (f64, f64), t: f64, end: f64) -> f64 {
         let next = (at - g / rate).clamp(0.0, end);
         // Newton from a nearby root moves by about the root's error; a long jump is another
         // root's basin, not this one's.
-        if !((next - t).abs() <= 1e-6 * (1.0 + t)) {
+        if next.is_nan() || (next - t).abs() > 1e-6 * (1.0 + t) {
             break;
         }
         at = next;
