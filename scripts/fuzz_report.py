@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Aggregates the part logs of a long fuzz run (fuzz --from K --scenes N, one log per part:
-the harness's stdout) into the README's Robustness section: the run's line, its endings by
-kind and its coverage table, written between the markers <!-- fuzz-report --> and
+the harness's stdout) into the book's Robustness page (docs/robustness.md): the run's line, its
+endings by kind and its coverage table, written between the markers <!-- fuzz-report --> and
 <!-- /fuzz-report -->. Usage: scripts/fuzz_report.py LOG_DIR [COMMIT]"""
 import collections
 import glob
@@ -89,7 +89,7 @@ why = lambda e, w: c(reasons[(e, w)])
 done = n >= 1000000
 commit = f", at commit {sys.argv[2]}" if len(sys.argv) > 2 else ""
 head = (f"**The run of 10⁶ scenes** (seed {seed}{commit}, in parts of 50,000 with `--from`; "
-        "`scripts/fuzz_report.py LOG_DIR COMMIT` writes this part of the section from the parts' "
+        "`scripts/fuzz_report.py LOG_DIR COMMIT` writes this part of the page from the parts' "
         "logs): "
         + (f"**{fails} failures** in {c(n)} scenes." if done
            else f"under way; the first {c(n)} scenes have **{fails} failures**.")
@@ -114,10 +114,10 @@ body = ("\n" + clean + "Why the cloth of each shot that did not finish was near-
         "impact approaching at 2 mm/s or less; `steep_cue`: a strike at 60° or steeper; "
         "`offset_beyond_r_plus_r`: a strike with an offset coordinate beyond R + r, valid only "
         "with a steep cue):\n\n")
-readme = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'README.md')
-s = open(readme).read()
+page = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'robustness.md')
+s = open(page).read()
 i = s.index('<!-- fuzz-report -->') + len('<!-- fuzz-report -->')
 j = s.index('<!-- /fuzz-report -->')
 s = s[:i] + '\n' + head + endings + body + cov + s[j:]
-open(readme, 'w').write(s)
+open(page, 'w').write(s)
 print(n, fails, seed)

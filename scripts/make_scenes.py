@@ -85,7 +85,7 @@ elevation = {elev:.6f}
 """
     open("scenes/chapter7-example.toml", "w").write(text)
 
-# The discrepancy workflow's data files (README, "Discrepancy workflow").
+# The discrepancy workflow's data files (docs/discrepancy.md; their format: docs/formats.md).
 # Speed uncertainty of the thesis's measured speeds: not stated; its tracking is accurate to
 # about 1 mm (thesis abstract), and a speed fitted over ~0.1 s of frames is then good to about
 # 0.015 m/s. We state 0.02 m/s.

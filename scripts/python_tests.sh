@@ -6,12 +6,14 @@
 # `cargo test --workspace --profile ci` (target/ci/snooker).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# pip through the venv's own python: a venv's bin/pip scripts name the path the venv was made at,
+# so a venv copied with target/ (from another clone) would install into the original.
 venv=target/py-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --disable-pip-version-check pytest numpy pyarrow ray gymnasium
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check pytest numpy pyarrow ray gymnasium
 export CARGO_TARGET_DIR=$PWD/target PYO3_PYTHON=$PWD/$venv/bin/python
 cargo fmt --manifest-path python/Cargo.toml -- --check
 cargo clippy --manifest-path python/Cargo.toml --release --all-targets -- -D warnings
-"$venv/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps ./python
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check --force-reinstall --no-deps ./python
 SNOOKER_CLI=$PWD/target/ci/snooker RAY_AUTH_MODE=disabled \
     "$venv/bin/python" -m pytest -q python/tests

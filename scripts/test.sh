@@ -6,8 +6,32 @@
 # package's tests (scripts/python_tests.sh: a venv from PyPI). Needs cargo, python3, node and
 # npm, and a TrueType font for
 # the plots' text (DejaVu Sans: installed here from Debian's packages if the machine lacks it).
+# Then the book (docs/, mdBook: installed with cargo if missing) is built and its links checked.
+# Each part prints its time when it ends (docs/testing.md quotes them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+part() {
+    local name=$1 start=$SECONDS
+    shift
+    "$@"
+    echo "== test.sh: $name took $((SECONDS - start)) s" >&2
+}
+# The book: mdBook 0.5 is installed by cargo when missing (once per machine, into cargo's bin
+# directory; about 2.8 CPU-minutes of building, no default features: no server, no search), then
+# `mdbook build docs` (to target/book), then every relative link and anchor of the built book and
+# of the README checked offline, and the architecture page's generated parts against the tree.
+book() {
+    local mdbook
+    mdbook=$(command -v mdbook || true)
+    if [ -z "$mdbook" ] || ! "$mdbook" --version | grep -q '^mdbook v0\.5\.'; then
+        cargo install mdbook --locked --no-default-features --version 0.5.4
+        mdbook=${CARGO_HOME:-$HOME/.cargo}/bin/mdbook
+    fi
+    "$mdbook" build docs
+    python3 scripts/check_links.py target/book
+    python3 scripts/crate_graph.py --check
+}
+start_all=$SECONDS
 font=""
 for f in /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf /usr/share/fonts/TTF/DejaVuSans.ttf \
     /usr/share/fonts/dejavu/DejaVuSans.ttf; do
@@ -22,18 +46,20 @@ if [ -z "$font" ]; then
         echo "warning: no DejaVu Sans font and no apt-get: the plot tests will fail" >&2
     fi
 fi
-cargo fmt --all -- --check
-cargo clippy --workspace --all-targets --profile ci -- -D warnings
-cargo test --workspace --profile ci
+part format cargo fmt --all -- --check
+part lints cargo clippy --workspace --all-targets --profile ci -- -D warnings
+part tests cargo test --workspace --profile ci
 # The API documentation builds without a warning (broken or private links fail it).
-RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --profile ci --quiet
+RUSTDOCFLAGS="-D warnings" part "API docs" cargo doc --workspace --no-deps --profile ci --quiet
+part book book
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
 # (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml. The binary
 # is the one `cargo test` built for fuzz/tests (`cargo run -p` or `cargo build` would resolve
 # other features and build the engine, or rerun's dependencies, again; the results are the
 # same bits either way).
-"${CARGO_TARGET_DIR:-target}/ci/snooker-fuzz" --scenes 10000
+part fuzz "${CARGO_TARGET_DIR:-target}/ci/snooker-fuzz" --scenes 10000
 # The shot lab's page in a real browser (server/browser/): the binary `cargo test` built.
-scripts/browser_tests.sh
+part browser scripts/browser_tests.sh
 # The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
-scripts/python_tests.sh
+part Python scripts/python_tests.sh
+echo "== test.sh: all parts took $((SECONDS - start_all)) s" >&2

@@ -3,7 +3,7 @@
 
 use clap::{Parser, Subcommand};
 use snooker::cmd::{
-    self, batch, discrepancy, impact, plan, referee, serve, simulate, synth, validate,
+    self, batch, discrepancy, impact, plan, play, referee, serve, simulate, synth, validate,
 };
 use std::process::ExitCode;
 
@@ -42,6 +42,11 @@ enum Command {
     /// Referee a frame of snooker: simulate the frame's strike, judge it by the rules (WPBSA),
     /// write the verdict and the next frame; several frames play a sequence of strokes.
     Referee(referee::Args),
+    /// Play snooker from a frame file: stroke after stroke chosen by the player (candidate pots
+    /// of every kind, valued by the position they leave, sampled under execution noise) and
+    /// played with the noise, for one visit or the whole frame; the play log, a summary, a
+    /// recording.
+    Play(play::Args),
     /// The shot lab: a local web page to set up a position, strike, plan a shot and play a
     /// frame (bound to the loopback address unless --host says otherwise).
     Serve(serve::Args),
@@ -78,6 +83,7 @@ fn main() -> ExitCode {
         Command::Plan(a) => plan::run(a),
         Command::Batch(a) => batch::run(a),
         Command::Referee(a) => referee::run(a),
+        Command::Play(a) => play::run(a),
         Command::Serve(a) => serve::run(a),
     }
 }

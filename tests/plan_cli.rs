@@ -58,6 +58,10 @@ fn the_chapter_7_plan_replays_exactly_through_simulate() {
     assert!(best["distance"].as_f64().unwrap() <= 0.001);
     let rob = &best["robustness"];
     assert_eq!(rob["samples"].as_u64(), Some(32));
+    // The default noise is the tournaments' standard, in the contract's keys and the new ones.
+    assert_eq!(rob["noise"]["speed"].as_f64(), Some(0.075));
+    assert_eq!(rob["noise"]["offset"].as_f64(), Some(0.0005));
+    assert_eq!(rob["noise"]["side"].as_f64(), Some(0.0005));
     let prob = rob["pot_probability"].as_f64().unwrap();
     assert!((0.0..=1.0).contains(&prob));
     // The scene written replays the planned shot: the same final cue-ball position, to the bit.
@@ -122,6 +126,93 @@ fn a_ball_that_cannot_be_potted_exits_1() {
 }
 
 #[test]
+fn a_blocked_pot_is_planned_as_another_kind_and_replays() {
+    // b0 stands between the red and the top-left pocket: no direct pot, but other kinds.
+    let dir = temp_dir("plan-kinds");
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}, \
+         {id = \"b0\", pos = [3.0, 1.47]}]\n",
+    )
+    .unwrap();
+    let (plan, out, result) = (
+        dir.join("plan.json"),
+        dir.join("planned.toml"),
+        dir.join("r.json"),
+    );
+    let args = |kinds: &str| -> Vec<String> {
+        [
+            "plan",
+            scene.to_str().unwrap(),
+            "--pot",
+            "red",
+            "--pocket",
+            "top-left",
+            "--cue-to",
+            "1.5,0.5",
+            "--tolerance",
+            "0.005",
+            "--samples",
+            "4",
+            "--alternatives",
+            "0",
+            "--kinds",
+            kinds,
+            "--json",
+            plan.to_str().unwrap(),
+            "--scene-out",
+            out.to_str().unwrap(),
+        ]
+        .map(String::from)
+        .to_vec()
+    };
+    let run = |kinds: &str| {
+        let a = args(kinds);
+        snooker(&a.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let o = run("direct");
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no direct pot is open"));
+    assert!(!plan.exists());
+    let o = run("direct,double,plant,kiss");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let p = json(&plan);
+    let kind = p["best"]["route"]["kind"].as_str().unwrap().to_string();
+    assert!(
+        ["double", "plant", "kiss"].contains(&kind.as_str()),
+        "{kind}"
+    );
+    assert!(!p["best"]["route"]["via"].as_array().unwrap().is_empty());
+    let o = snooker(&[
+        "simulate",
+        out.to_str().unwrap(),
+        "--json",
+        result.to_str().unwrap(),
+    ]);
+    assert!(o.status.success());
+    let r = json(&result);
+    for k in 0..2 {
+        assert_eq!(
+            r["final"]["cue"]["pos"][k].as_f64().unwrap().to_bits(),
+            p["best"]["cue_final"][k].as_f64().unwrap().to_bits()
+        );
+    }
+    assert!(
+        r["pots"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|x| x["ball"] == "red" && x["pocket"] == "top-left")
+    );
+}
+
+#[test]
 fn bad_requests_exit_2_with_one_message_and_write_nothing() {
     let dir = temp_dir("plan-bad");
     let out = dir.join("plan.json");
@@ -156,6 +247,14 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
         (format!("{ok} --cue-to 2.01,1.0"), "--cue-to"),
         (format!("{ok} --cue-to 1;1"), "--cue-to"),
         (format!("{ok} --cue-to 1,1 --noise aim=x"), "--noise"),
+        (format!("{ok} --cue-to 1,1 --kinds direct,bank"), "--kinds"),
+        (format!("{ok} --cue-to 1,1 --noise blur=0.1"), "--noise"),
+        (format!("{ok} --cue-to 1,1 --noise standard*-1"), "--noise"),
+        // The old spelling: speed as a fraction beside one offset is refused, not misread.
+        (
+            format!("{ok} --cue-to 1,1 --noise aim=0.002,speed=0.02,offset=0.001"),
+            "m/s",
+        ),
         (
             format!("{ok} --cue-to 1,1 --bounds speed=0.3..40"),
             "--bounds",

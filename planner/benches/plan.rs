@@ -7,7 +7,7 @@
 //!   ([`reachable`], seed 7), planned one after the other: criterion's time divided by twelve
 //!   is the mean per plan. Before it the bench prints each position's own wall time (the
 //!   median of three runs), shots simulated and distance reached, and their median: the
-//!   numbers the README reports.
+//!   numbers the book reports (docs/performance.md).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rand::SeedableRng;
@@ -42,7 +42,7 @@ fn reachable_problems(tol: f64) -> Vec<Problem> {
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let mut problems = Vec::new();
     while problems.len() < POSITIONS {
-        let Some(case) = reachable::draw(&mut rng) else {
+        let Some(case) = reachable::draw(&mut rng, reachable::Pots::Direct) else {
             continue;
         };
         let scene = snooker_scene::parse(&case.text, "case.toml").expect("scene");

@@ -25,6 +25,9 @@
 
 pub mod aim;
 pub mod cancel;
+pub mod explore;
+pub mod line;
+pub mod noise;
 pub mod problem;
 pub mod reachable;
 pub mod robust;
@@ -32,7 +35,11 @@ pub mod scene_out;
 pub mod search;
 pub mod trial;
 
+pub use aim::Stroke;
 pub use cancel::Cancel;
+pub use explore::{Objective, Scored, explore, refine};
+pub use line::{Line, ShotKind};
+pub use noise::{StrikeErrors, execute, rng_for};
 pub use problem::{
     Bounds, Interval, Noise, NoiseComponent, PlanError, Problem, Request, RequestField,
     StrikeVariable,
@@ -86,6 +93,11 @@ impl StrikeSpec {
 /// The cue ball's route, for reading.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RouteSpec {
+    /// The kind of pot aimed: `direct`, `double`, `plant` or `kiss`.
+    pub kind: ShotKind,
+    /// The ball a plant strikes first or a kiss glances off (its id), or the cushions a
+    /// double's object ball meets (names, in order); empty for a direct pot.
+    pub via: Vec<String>,
     /// Cushions met by the cue ball after the object ball (at most three).
     pub cushions: Vec<String>,
     /// "screw", "stun" or "follow" (tip below, near or above the centre).
@@ -135,6 +147,22 @@ pub struct Plan {
     pub wall_time: f64,
 }
 
+/// "direct pot, double, plant or kiss" for the kinds given.
+fn kinds_phrase(kinds: &[ShotKind]) -> String {
+    let names: Vec<&str> = kinds
+        .iter()
+        .map(|k| match k {
+            ShotKind::Direct => "direct pot",
+            k => k.name(),
+        })
+        .collect();
+    match names.split_last() {
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
+}
+
 /// Plans on `scene` (its `[cue]` ignored).
 pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
     let problem = Problem::new(scene, request)?;
@@ -149,10 +177,11 @@ pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanErr
     if found.is_empty() {
         return Err(PlanError::CannotPot(format!(
             "no strike within the bounds pots \"{}\" in {} without a foul ({} shots tried): \
-             the way is blocked, or the cue ball cannot reach a contact that sends it there",
+             no {} is open, or the cue ball cannot reach a contact that sends it there",
             req.pot,
             req.pocket,
-            problem.shots()
+            problem.shots(),
+            kinds_phrase(&req.kinds)
         )));
     }
     let cue_id = problem.setup.balls[problem.cue].id.clone();
@@ -161,12 +190,23 @@ pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanErr
         .enumerate()
         .map(|(k, f)| {
             let t = &f.trial;
+            let line = &t.route.line;
+            let via = match (line.ball, line.kind) {
+                (Some(b), _) => vec![problem.setup.balls[b].id.clone()],
+                (None, _) => line
+                    .cushions
+                    .iter()
+                    .map(|&c| problem.setup.table.cushions[c].name.clone())
+                    .collect(),
+            };
             PlannedShot {
                 strike: StrikeSpec::new(&cue_id, &t.cue),
                 potted: t.pots(),
                 cue_final: [t.cue_final.x, t.cue_final.y],
                 distance: f.distance,
                 route: RouteSpec {
+                    kind: line.kind,
+                    via,
                     cushions: t.route.cushions.clone(),
                     spin: match t.route.spin {
                         -1 => "screw",
@@ -174,7 +214,7 @@ pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanErr
                         _ => "follow",
                     },
                 },
-                robustness: problem.robustness(&t.cue, k as u64),
+                robustness: problem.robustness(&t.cue, line, k as u64),
             }
         })
         .collect();

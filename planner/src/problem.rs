@@ -7,6 +7,9 @@ use snooker_engine::{Params, Setup, SimOptions, Vec3};
 use snooker_scene::Scene;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use crate::line::{Line, ShotKind};
+pub use crate::noise::{Noise, NoiseComponent};
+
 /// A field of a planning request, as errors name it: the library speaks of the request's own
 /// fields (`pot`, `bounds.speed`, `noise.aim`), and each front end says how its user spelled
 /// them (a command-line flag, a Python argument).
@@ -28,6 +31,10 @@ pub enum RequestField {
     Bounds(StrikeVariable),
     /// One standard deviation of [`Request::noise`].
     Noise(NoiseComponent),
+    /// [`Request::kinds`].
+    Kinds,
+    /// [`Request::plant_balls`].
+    PlantBalls,
 }
 
 impl std::fmt::Display for RequestField {
@@ -41,6 +48,8 @@ impl std::fmt::Display for RequestField {
             RequestField::Samples => f.write_str("samples"),
             RequestField::Bounds(v) => write!(f, "bounds.{}", v.name()),
             RequestField::Noise(c) => write!(f, "noise.{}", c.name()),
+            RequestField::Kinds => f.write_str("kinds"),
+            RequestField::PlantBalls => f.write_str("plant_balls"),
         }
     }
 }
@@ -89,40 +98,6 @@ impl StrikeVariable {
     /// The variable of that name.
     pub fn from_name(name: &str) -> Option<StrikeVariable> {
         Self::ALL.into_iter().find(|v| v.name() == name)
-    }
-}
-
-/// A component of the execution noise ([`Noise`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum NoiseComponent {
-    /// Heading, rad.
-    Aim,
-    /// Speed, a fraction of the speed.
-    Speed,
-    /// Each tip offset, m.
-    Offset,
-}
-
-impl NoiseComponent {
-    /// All of them.
-    pub const ALL: [NoiseComponent; 3] = [
-        NoiseComponent::Aim,
-        NoiseComponent::Speed,
-        NoiseComponent::Offset,
-    ];
-
-    /// Its name (`aim`, `speed`, `offset`).
-    pub fn name(self) -> &'static str {
-        match self {
-            NoiseComponent::Aim => "aim",
-            NoiseComponent::Speed => "speed",
-            NoiseComponent::Offset => "offset",
-        }
-    }
-
-    /// The component of that name.
-    pub fn from_name(name: &str) -> Option<NoiseComponent> {
-        Self::ALL.into_iter().find(|c| c.name() == name)
     }
 }
 
@@ -280,63 +255,6 @@ impl Bounds {
     }
 }
 
-/// How far a strike may stray from the one intended: independent normal errors with these
-/// standard deviations. Default: the command's example, a steady player's cue (a robot's is
-/// a matter of measurement: thesis §7.1.3).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Noise {
-    /// Heading, rad.
-    pub aim: f64,
-    /// Speed, as a fraction of the speed (0.02 = 2 %).
-    pub speed: f64,
-    /// Each tip offset, m.
-    pub offset: f64,
-}
-
-impl Default for Noise {
-    fn default() -> Noise {
-        Noise {
-            aim: 0.002,
-            speed: 0.02,
-            offset: 0.001,
-        }
-    }
-}
-
-impl Noise {
-    /// The standard deviation of component `c`.
-    pub fn get(&self, c: NoiseComponent) -> f64 {
-        match c {
-            NoiseComponent::Aim => self.aim,
-            NoiseComponent::Speed => self.speed,
-            NoiseComponent::Offset => self.offset,
-        }
-    }
-
-    /// Sets the standard deviation of component `c`.
-    pub fn set(&mut self, c: NoiseComponent, value: f64) {
-        match c {
-            NoiseComponent::Aim => self.aim = value,
-            NoiseComponent::Speed => self.speed = value,
-            NoiseComponent::Offset => self.offset = value,
-        }
-    }
-
-    /// Checks every standard deviation: a finite number, at least 0.
-    pub fn check(&self) -> Result<(), PlanError> {
-        for c in NoiseComponent::ALL {
-            let v = self.get(c);
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(bad(
-                    RequestField::Noise(c),
-                    format!("expected a finite number >= 0, got {v}"),
-                ));
-            }
-        }
-        Ok(())
-    }
-}
-
 /// A planning request, by name (as the command takes it).
 #[derive(Debug, Clone)]
 pub struct Request {
@@ -360,11 +278,16 @@ pub struct Request {
     pub alternatives: usize,
     /// Seed of the noise samples.
     pub seed: u64,
+    /// The kinds of pot tried (direct pots first, the others when those do not reach the
+    /// target).
+    pub kinds: Vec<ShotKind>,
+    /// The balls a plant may strike first (ids); None: any ball.
+    pub plant_balls: Option<Vec<String>>,
 }
 
 impl Request {
-    /// A request with the default bounds (for `p`), noise, 256 samples, 3 alternatives and
-    /// a 1 mm tolerance.
+    /// A request with the default bounds (for `p`), the standard noise ([`Noise::STANDARD`]),
+    /// 256 samples, 3 alternatives and a 1 mm tolerance.
     pub fn new(pot: &str, pocket: &str, target: [f64; 2], p: &Params) -> Request {
         Request {
             cue_ball: "cue".into(),
@@ -377,6 +300,8 @@ impl Request {
             samples: 256,
             alternatives: 3,
             seed: 1,
+            kinds: ShotKind::ALL.to_vec(),
+            plant_balls: None,
         }
     }
 }
@@ -399,6 +324,8 @@ pub struct Problem {
     pub pocket: usize,
     /// The cue ball's target, m (z = R).
     pub target: Vec3,
+    /// For each ball, whether a plant may strike it first.
+    plant_ok: Vec<bool>,
     shots: AtomicU64,
     cancel: Cancel,
 }
@@ -411,6 +338,20 @@ impl Problem {
             // The scene's own strike is ignored: the cue ball lies where it was before it.
             setup.balls[s.index].state = s.before;
         }
+        let problem = Problem::for_setup(setup, scene.options, request)?;
+        problem.check_target()?;
+        Ok(problem)
+    }
+
+    /// Checks `request` against the balls of `setup` (at rest, no strike applied), simulated
+    /// with `options`: as [`Problem::new`], but the target is not checked (a caller valuing
+    /// strokes by its own [`crate::explore::Objective`] may give any point, such as where the
+    /// cue ball lies).
+    pub fn for_setup(
+        setup: Setup,
+        options: SimOptions,
+        request: Request,
+    ) -> Result<Problem, PlanError> {
         let p = setup.params;
         let r = p.ball_radius;
         let index = |field: RequestField, id: &str| {
@@ -472,13 +413,60 @@ impl Problem {
             return Err(bad(RequestField::Target, "the target must be finite"));
         }
         let target = Vec3::new(x, y, r);
-        if let Some(why) = setup.table.placement_error(target, r) {
+        if !(request.tolerance.is_finite() && request.tolerance > 0.0) {
+            return Err(bad(
+                RequestField::Tolerance,
+                "must be a positive distance, m",
+            ));
+        }
+        if request.samples == 0 {
+            return Err(bad(RequestField::Samples, "at least one sample"));
+        }
+        request.bounds.check(&p)?;
+        request.noise.check()?;
+        if request.kinds.is_empty() {
+            return Err(bad(RequestField::Kinds, "at least one kind of pot"));
+        }
+        let plant_ok = match &request.plant_balls {
+            None => vec![true; setup.balls.len()],
+            Some(ids) => {
+                let mut ok = vec![false; setup.balls.len()];
+                for id in ids {
+                    ok[index(RequestField::PlantBalls, id)?] = true;
+                }
+                ok
+            }
+        };
+        Ok(Problem {
+            setup,
+            options,
+            request,
+            cue,
+            object,
+            pocket,
+            target,
+            plant_ok,
+            shots: AtomicU64::new(0),
+            cancel: Cancel::new(),
+        })
+    }
+
+    /// Checks that a ball could stop at the target: on the cloth, clear of every ball but the
+    /// cue ball and the object ball.
+    fn check_target(&self) -> Result<(), PlanError> {
+        let (target, r, cue, object) = (
+            self.target,
+            self.setup.params.ball_radius,
+            self.cue,
+            self.object,
+        );
+        if let Some(why) = self.setup.table.placement_error(target, r) {
             return Err(bad(
                 RequestField::Target,
                 format!("a ball cannot stop there: {why}"),
             ));
         }
-        for (i, b) in setup.balls.iter().enumerate() {
+        for (i, b) in self.setup.balls.iter().enumerate() {
             let gap = (b.state.pos - target).xy().norm();
             if i != cue && i != object && b.state.motion.in_play() && gap < 2.0 * r {
                 return Err(bad(
@@ -491,28 +479,26 @@ impl Problem {
                 ));
             }
         }
-        if !(request.tolerance.is_finite() && request.tolerance > 0.0) {
-            return Err(bad(
-                RequestField::Tolerance,
-                "must be a positive distance, m",
-            ));
-        }
-        if request.samples == 0 {
-            return Err(bad(RequestField::Samples, "at least one sample"));
-        }
-        request.bounds.check(&p)?;
-        request.noise.check()?;
-        Ok(Problem {
-            setup,
-            options: scene.options,
-            request,
-            cue,
-            object,
-            pocket,
-            target,
-            shots: AtomicU64::new(0),
-            cancel: Cancel::new(),
-        })
+        Ok(())
+    }
+
+    /// True when the cue ball may strike ball `b` first: the object ball, or a ball a plant
+    /// may strike first.
+    pub fn may_hit_first(&self, b: usize) -> bool {
+        b == self.object
+            || (self.request.kinds.contains(&ShotKind::Plant)
+                && b != self.cue
+                && self.plant_ok.get(b).copied().unwrap_or(false))
+    }
+
+    /// The lines the request allows ([`Problem::lines`] of its kinds, plants through the
+    /// balls it allows).
+    pub fn requested_lines(&self) -> Vec<Line> {
+        self.lines()
+            .into_iter()
+            .filter(|l| self.request.kinds.contains(&l.kind))
+            .filter(|l| l.kind != ShotKind::Plant || l.ball.is_some_and(|b| self.may_hit_first(b)))
+            .collect()
     }
 
     /// Shots simulated so far.

@@ -1,13 +1,25 @@
 //! Positions with a known answer, for measuring the planner (issue 13's accuracy test and
 //! bench): a random position (cue ball, object ball, 0-6 other balls, at least three radii
-//! apart, on the 12 ft table), a random strike that pots the object ball cleanly and directly
-//! (it meets nothing on its way: the planner aims direct pots), and the cue ball's end as the
-//! target. A plan that reaches the target then exists: the strike itself.
+//! apart, on the 12 ft table), a random strike that pots the object ball, and the cue ball's
+//! end as the target. A plan that reaches the target then exists: the strike itself. The
+//! strike may be any pot ([`Pots::Any`]: direct, off cushions, through another ball, kissed)
+//! or only a clean direct one ([`Pots::Direct`], the bench's positions).
 
-use crate::{Problem, Request};
+use crate::line::ShotKind;
+use crate::trial::{classify, first_hit};
 use rand::RngExt;
-use snooker_engine::{Cue, Params, SnookerDims};
+use snooker_engine::{Cue, EventKind, Motion, Params, SnookerDims, simulate};
 use snooker_scene::{BallSpec, SceneFile, parse};
+
+/// Which potting strikes a draw keeps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pots {
+    /// Any strike that pots the object ball with the cue ball left on the table.
+    Any,
+    /// Only those where the cue ball hits the object ball first and it meets nothing (no
+    /// cushion, jaw or ball) on its way into the pocket.
+    Direct,
+}
 
 /// Ids of the balls placed: the cue ball, the object ball, then the others.
 const IDS: [&str; 8] = ["cue", "obj", "b1", "b2", "b3", "b4", "b5", "b6"];
@@ -25,6 +37,8 @@ pub struct Reachable {
     pub target: [f64; 2],
     /// The strike.
     pub strike: Cue,
+    /// What kind of pot it is.
+    pub kind: ShotKind,
 }
 
 /// A scene text with `balls` at (x, y).
@@ -38,9 +52,9 @@ fn scene_text(balls: &[(&str, [f64; 2])]) -> String {
 }
 
 /// A random position and a random strike from it (speed 0.5-5 m/s, a cut within 0.8 of the
-/// thinnest, tip offsets within 8 mm, level cue); `None` when the strike pots nothing cleanly
-/// and directly (draw again: about one in eight does).
-pub fn draw(rng: &mut impl RngExt) -> Option<Reachable> {
+/// thinnest, tip offsets within 8 mm, level cue); `None` when the strike pots nothing as
+/// `pots` asks (draw again: about one in eight pots cleanly and directly).
+pub fn draw(rng: &mut impl RngExt, pots: Pots) -> Option<Reachable> {
     let dims = SnookerDims::default();
     let r = Params::default().ball_radius;
     let others = rng.random_range(0..=6);
@@ -78,21 +92,36 @@ pub fn draw(rng: &mut impl RngExt) -> Option<Reachable> {
         ],
         elevation: 0.0,
     };
-    // The planner's own judge of a shot, on a request whose pocket is the one potted into.
+    let mut setup = scene.setup.clone();
+    setup.balls[0].strike(&strike, &setup.params).ok()?;
+    let shot = simulate(&setup, &scene.options).ok()?;
+    let cue_end = shot.final_states()[0];
+    if cue_end.motion != Motion::Stationary {
+        return None;
+    }
+    // Clean and direct: the cue ball hits the object ball first, which then meets nothing.
+    let clean = || match first_hit(&shot, 0) {
+        Some((1, contact)) => !shot.events.iter().any(|e| {
+            e.t > contact.t
+                && e.balls.contains(&1)
+                && matches!(e.kind, EventKind::BallBall | EventKind::BallCushion)
+        }),
+        _ => false,
+    };
     for pocket in &scene.setup.table.pockets {
-        let req = Request::new("obj", &pocket.name, [1.0, 0.5], &scene.setup.params);
-        let Ok(problem) = Problem::new(&scene, req) else {
+        let Some(kind) = classify(&shot, 0, 1, &pocket.name) else {
             continue;
         };
-        let t = problem.trial(&strike)?;
-        if t.pots() && t.direct {
-            return Some(Reachable {
-                text,
-                pocket: pocket.name.clone(),
-                target: [t.cue_final.x, t.cue_final.y],
-                strike,
-            });
+        if pots == Pots::Direct && !clean() {
+            return None;
         }
+        return Some(Reachable {
+            text,
+            pocket: pocket.name.clone(),
+            target: [cue_end.pos.x, cue_end.pos.y],
+            strike,
+            kind,
+        });
     }
     None
 }

@@ -1,11 +1,11 @@
 //! How a shot fares when the cue cannot repeat it exactly: Monte Carlo over the execution
-//! noise (independent normal errors in heading, speed and tip offsets), each sample its own
-//! seeded generator, so the answer does not depend on the thread count.
+//! noise ([`crate::noise`]: independent normal errors in heading, elevation, speed and tip
+//! offsets), each sample its own seeded generator, so the answer does not depend on the
+//! thread count.
 
-use crate::problem::{Noise, Problem};
-use rand::SeedableRng;
-use rand::rngs::ChaCha8Rng;
-use rand_distr::{Distribution, Normal};
+use crate::line::Line;
+use crate::noise::{Noise, rng_for};
+use crate::problem::Problem;
 use rayon::prelude::*;
 use snooker_engine::cue::Cue;
 
@@ -24,33 +24,20 @@ pub struct Robustness {
     pub cue_final_spread: f64,
 }
 
-/// One normal error of standard deviation `sd` (zero when `sd` is zero).
-fn error(sd: f64, rng: &mut ChaCha8Rng) -> f64 {
-    Normal::new(0.0, sd).map_or(0.0, |n| n.sample(rng))
-}
-
 impl Problem {
-    /// The robustness of strike `cue`; `stream` tells shots apart in the noise's seeding.
-    pub fn robustness(&self, cue: &Cue, stream: u64) -> Robustness {
+    /// The robustness of strike `cue` aimed along `line`; `stream` tells shots apart in the
+    /// noise's seeding.
+    pub fn robustness(&self, cue: &Cue, line: &Line, stream: u64) -> Robustness {
         let noise = self.request.noise;
         let n = self.request.samples;
-        let seed = self.request.seed ^ stream.wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        let seed = self.request.seed;
+        let ball = self.setup.balls[self.cue].state;
+        let p = &self.setup.params;
         let runs: Vec<Option<(bool, [f64; 2])>> = (0..n as u64)
             .into_par_iter()
             .map(|k| {
-                let mut rng =
-                    ChaCha8Rng::seed_from_u64(seed ^ k.wrapping_mul(0xd1b5_4a32_d192_ed03));
-                let c = Cue {
-                    speed: cue.speed * (1.0 + error(noise.speed, &mut rng)),
-                    aim: cue.aim + error(noise.aim, &mut rng),
-                    offset: [
-                        cue.offset[0] + error(noise.offset, &mut rng),
-                        cue.offset[1] + error(noise.offset, &mut rng),
-                    ],
-                    elevation: cue.elevation,
-                };
-                // A strike the noise makes impossible (a miscue) pots nothing.
-                self.trial(&c)
+                let c = noise.apply(cue, &ball, p, &mut rng_for(seed, &[stream, k]));
+                self.trial(&c, line)
                     .map(|t| (t.pots(), [t.cue_final.x, t.cue_final.y]))
             })
             .collect();

@@ -5,6 +5,7 @@
 //! Nelder–Mead needs.
 
 use crate::aim::Stroke;
+use crate::line::{Line, ShotKind};
 use crate::problem::{Bounds, Problem};
 use crate::trial::{Route, Trial};
 use argmin::core::{CostFunction, Error, Executor, State};
@@ -90,12 +91,13 @@ pub struct Found {
 struct Cost<'a> {
     problem: &'a Problem,
     free: &'a [Var],
+    line: &'a Line,
 }
 
 impl Cost<'_> {
     fn eval(&self, x: &[f64]) -> Option<Found> {
         let s = stroke(&self.problem.request.bounds, self.free, x);
-        let trial = self.problem.aimed(&s)?;
+        let trial = self.problem.aimed(&s, self.line)?;
         let distance = self.problem.distance(&trial);
         Some(Found {
             trial,
@@ -170,6 +172,7 @@ fn refine(cost: &Cost<'_>, start: &Found, target: f64, size: f64) -> Found {
                 Cost {
                     problem: cost.problem,
                     free: cost.free,
+                    line: cost.line,
                 },
                 solver,
             )
@@ -186,37 +189,90 @@ fn refine(cost: &Cost<'_>, start: &Found, target: f64, size: f64) -> Found {
     }
 }
 
-/// The best pot found on each route of the cue ball, best first; empty if no stroke pots.
-pub fn search(problem: &Problem, routes: usize) -> Vec<Found> {
-    let free = free_vars(&problem.request.bounds);
-    let cost = Cost {
-        problem,
-        free: &free,
-    };
-    let tried: Vec<Option<Found>> = starts(&free).par_iter().map(|x| cost.eval(x)).collect();
+/// The stages of the search: direct pots first; the other kinds only if those do not reach
+/// the target (or give too few routes).
+const STAGES: [&[ShotKind]; 2] = [
+    &[ShotKind::Direct],
+    &[ShotKind::Double, ShotKind::Plant, ShotKind::Kiss],
+];
+
+/// Potting points a local grid is laid around when the grid's seeds do not reach the target.
+const DENSE_CENTRES: usize = 6;
+
+/// Half the grid's spacing along each free variable (the unit box).
+fn half_spacing(free: &[Var]) -> Vec<f64> {
+    free.iter()
+        .map(|v| match v {
+            Var::Speed => 0.5 / SPEEDS as f64,
+            Var::Side => 0.5 * (SIDES[1] - SIDES[0]),
+            Var::Height => 0.5 * (HEIGHTS[1] - HEIGHTS[0]),
+            Var::Elevation => 0.5 * (ELEVATIONS[1] - ELEVATIONS[0]),
+            Var::Mouth => 0.5 * (MOUTHS[1] - MOUTHS[0]),
+        })
+        .collect()
+}
+
+/// The points of a local grid around `x`: every combination of -h, 0, +h along each variable
+/// but `x` itself.
+fn local_grid(x: &[f64], h: &[f64]) -> Vec<Vec<f64>> {
+    let mut out: Vec<Vec<f64>> = vec![Vec::new()];
+    for (&c, &hk) in x.iter().zip(h) {
+        out = out
+            .iter()
+            .flat_map(|p| {
+                [-hk, 0.0, hk].into_iter().map(move |d| {
+                    let mut q = p.clone();
+                    q.push((c + d).clamp(0.0, 1.0));
+                    q
+                })
+            })
+            .collect();
+    }
+    out.retain(|p| p.as_slice() != x);
+    out
+}
+
+/// True when the search has what it was asked for.
+fn done(refined: &[Found], routes: usize, tol: f64) -> bool {
+    refined.len() >= routes && refined.iter().any(|f| f.distance <= tol)
+}
+
+/// The best potting stroke of each route among `found` (at most [`MAX_SEEDS`], nearest
+/// first), refined two at a time until the search is done; the refined strokes are added to
+/// `refined`.
+fn seed_and_refine(
+    problem: &Problem,
+    free: &[Var],
+    found: &[Found],
+    refined: &mut Vec<Found>,
+    routes: usize,
+) {
+    let tol = problem.request.tolerance;
+    let target = 0.25 * tol;
     let mut by_route: BTreeMap<Route, Found> = BTreeMap::new();
-    for f in tried.into_iter().flatten().filter(|f| f.trial.pots()) {
+    for f in found.iter().filter(|f| f.trial.pots()) {
         let slot = by_route
             .entry(f.trial.route.clone())
             .or_insert_with(|| f.clone());
         if f.distance < slot.distance {
-            *slot = f;
+            *slot = f.clone();
         }
     }
     let mut seeds: Vec<Found> = by_route.into_values().collect();
     seeds.sort_by(|a, b| a.distance.total_cmp(&b.distance));
     seeds.truncate(MAX_SEEDS);
-    let tol = problem.request.tolerance;
-    let target = 0.25 * tol;
-    let mut refined: Vec<Found> = Vec::new();
     for batch in seeds.chunks(BATCH) {
-        let done = refined.len() >= routes && refined.iter().any(|f| f.distance <= tol);
-        if done {
+        if done(refined, routes, tol) {
             break;
         }
         let more: Vec<Found> = batch
             .par_iter()
             .map(|s| {
+                let cost = Cost {
+                    problem,
+                    free,
+                    line: &s.trial.route.line,
+                };
                 let f = refine(&cost, s, target, SIMPLEX);
                 if f.distance > tol {
                     // Once more from where it got to, with a smaller simplex.
@@ -227,6 +283,68 @@ pub fn search(problem: &Problem, routes: usize) -> Vec<Found> {
             })
             .collect();
         refined.extend(more);
+    }
+}
+
+/// Evaluates strokes at `points` of the unit box, each on its line, in parallel.
+fn evaluate(problem: &Problem, free: &[Var], points: &[(&Line, Vec<f64>)]) -> Vec<Found> {
+    points
+        .par_iter()
+        .map(|(line, x)| {
+            Cost {
+                problem,
+                free,
+                line,
+            }
+            .eval(x)
+        })
+        .collect::<Vec<Option<Found>>>()
+        .into_iter()
+        .flatten()
+        .collect()
+}
+
+/// The best pot found on each route of the cue ball, best first; empty if no stroke pots.
+///
+/// By stages (direct pots, then the other kinds): a grid of starts on every line of the stage;
+/// the best start of each route refined by Nelder–Mead; and if that does not reach the
+/// target, a finer local grid around the potting starts nearest it, refined likewise.
+pub fn search(problem: &Problem, routes: usize) -> Vec<Found> {
+    let free = free_vars(&problem.request.bounds);
+    let lines = problem.requested_lines();
+    let tol = problem.request.tolerance;
+    let grid = starts(&free);
+    let h = half_spacing(&free);
+    let mut refined: Vec<Found> = Vec::new();
+    for stage in STAGES {
+        if done(&refined, routes, tol) {
+            break;
+        }
+        let jobs: Vec<(&Line, Vec<f64>)> = lines
+            .iter()
+            .filter(|l| stage.contains(&l.kind))
+            .flat_map(|l| grid.iter().map(move |x| (l, x.clone())))
+            .collect();
+        let mut potting: Vec<Found> = evaluate(problem, &free, &jobs)
+            .into_iter()
+            .filter(|f| f.trial.pots())
+            .collect();
+        seed_and_refine(problem, &free, &potting, &mut refined, routes);
+        if done(&refined, routes, tol) {
+            break;
+        }
+        potting.sort_by(|a, b| a.distance.total_cmp(&b.distance));
+        let dense: Vec<(&Line, Vec<f64>)> = potting
+            .iter()
+            .take(DENSE_CENTRES)
+            .flat_map(|f| {
+                local_grid(&f.x, &h)
+                    .into_iter()
+                    .map(move |x| (&f.trial.route.line, x))
+            })
+            .collect();
+        let more = evaluate(problem, &free, &dense);
+        seed_and_refine(problem, &free, &more, &mut refined, routes);
     }
     refined.sort_by(|a, b| a.distance.total_cmp(&b.distance));
     // A refinement may have crossed onto another seed's route: keep the best of each.

@@ -1,14 +1,15 @@
-//! The planner against positions with a known answer (issue 13; [`reachable`]): random
-//! positions (cue ball, object ball, 0-6 other balls, 12 ft table), a random strike simulated by
-//! the engine that pots the object ball cleanly and directly (the planner aims direct pots, not
-//! doubles or plants), and the cue ball's end as the target: a plan then exists.
-//! The planner must pot the ball and leave the cue ball within 5 mm in at least 95 % of the
-//! cases, and every plan must replay to the bit from the scene it writes.
+//! The planner against positions with a known answer (issues 13 and 23; [`reachable`]): random
+//! positions (cue ball, object ball, 0-6 other balls, 12 ft table), a random strike simulated
+//! by the engine that pots the object ball in any way (direct, doubled off cushions, planted
+//! through another ball, kissed: `Pots::Any`), and the cue ball's end as the target: a plan
+//! then exists. The planner must pot the ball and leave the cue ball within 5 mm in at least
+//! 95 % of the cases, and every plan must replay to the bit from the scene it writes.
 
 use rand::SeedableRng;
 use rand::rngs::ChaCha8Rng;
-use snooker_planner::{Problem, Request, plan_problem, reachable, scene_out};
+use snooker_planner::{Problem, Request, ShotKind, plan_problem, reachable, scene_out};
 use snooker_scene::parse;
+use std::collections::BTreeMap;
 
 const CASES: usize = 200;
 const REACH: f64 = 0.005;
@@ -18,6 +19,8 @@ fn plans_reach_known_targets_and_replay_exactly() {
     let mut rng = ChaCha8Rng::seed_from_u64(13);
     let (mut cases, mut reached, mut shots, mut tried) = (0, 0, 0, 0);
     let mut misses = Vec::new();
+    // Per kind of the drawn strike: cases and reached.
+    let mut by_kind: BTreeMap<ShotKind, (usize, usize)> = BTreeMap::new();
     while cases < CASES {
         tried += 1;
         assert!(tried < 200 * CASES, "too few potting strikes");
@@ -25,8 +28,9 @@ fn plans_reach_known_targets_and_replay_exactly() {
             text,
             pocket,
             target,
-            ..
-        }) = reachable::draw(&mut rng)
+            kind,
+            strike,
+        }) = reachable::draw(&mut rng, reachable::Pots::Any)
         else {
             continue;
         };
@@ -40,10 +44,14 @@ fn plans_reach_known_targets_and_replay_exactly() {
             continue;
         };
         cases += 1;
+        by_kind.entry(kind).or_default().0 += 1;
         let plan = match plan_problem(&problem, "case") {
             Ok(p) => p,
             Err(e) => {
-                misses.push(format!("{e}\n{text}pocket {pocket}, target {target:?}"));
+                misses.push(format!(
+                    "{} {e}\n{text}pocket {pocket}, target {target:?}, drawn strike {strike:?}",
+                    kind.name()
+                ));
                 continue;
             }
         };
@@ -51,10 +59,14 @@ fn plans_reach_known_targets_and_replay_exactly() {
         assert!(plan.best.potted);
         if plan.best.distance <= REACH {
             reached += 1;
+            by_kind.entry(kind).or_default().1 += 1;
         } else {
             misses.push(format!(
-                "{:.1} mm\n{text}pocket {pocket}, target {target:?}",
-                plan.best.distance * 1e3
+                "{} drawn, {:.1} mm ({} planned)\n{text}pocket {pocket}, target {target:?}, \
+                 drawn strike {strike:?}",
+                kind.name(),
+                plan.best.distance * 1e3,
+                plan.best.route.kind.name()
             ));
         }
         // Replays to the bit from the scene written.
@@ -69,6 +81,12 @@ fn plans_reach_known_targets_and_replay_exactly() {
         );
     }
     let share = reached as f64 / cases as f64;
+    for (kind, (n, ok)) in &by_kind {
+        eprintln!("{}: {ok} of {n} reached", kind.name());
+    }
+    for m in &misses {
+        eprintln!("missed: {}", m.lines().next().unwrap_or(""));
+    }
     eprintln!(
         "{reached} of {cases} within {} mm ({:.1} %), {} shots per plan on average",
         REACH * 1e3,

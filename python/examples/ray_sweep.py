@@ -13,7 +13,7 @@ probability per position is printed.
 
 The same code runs on one machine or a cluster: only `ray.init`'s address changes. The shots
 are independent, so the sweep scales with the cores while each task's work outweighs Ray's
-per-task cost (about 5 ms here): tasks of 512 shots or more keep it under 5 % (the README
+per-task cost (about 5 ms here): tasks of 512 shots or more keep it under 5 % (docs/python.md
 has the measured shots/s).
 """
 

@@ -1,6 +1,6 @@
 """The snooker engine from Python: event-driven shots with the thesis's frictional impacts.
 
-Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's README.
+Units are SI (m, s, rad, m/s, rad/s) in the table frame, z up; see the project's book (docs/physics.md).
 
     >>> import snooker
     >>> shot = snooker.simulate({"balls": [{"id": "cue", "pos": [1.0, 0.8]},
@@ -34,6 +34,8 @@ from . import _snooker
 from ._snooker import CannotPot, SimulationError
 from .records import (
     BallState,
+    Considered,
+    Decision,
     Event,
     ImpactReport,
     OffTable,
@@ -41,6 +43,7 @@ from .records import (
     PlannedShot,
     Pot,
     ShotResult,
+    Stroke,
 )
 
 __all__ = [
@@ -63,6 +66,11 @@ __all__ = [
     "simulate",
     "simulate_many",
     "plan",
+    "play",
+    "choose",
+    "Stroke",
+    "Decision",
+    "Considered",
     "impact_ball_ball",
     "impact_cushion",
 ]
@@ -248,7 +256,7 @@ def plan(
     pocket: str,
     cue_to: Sequence[float],
     tolerance: float = 0.001,
-    noise: Optional[dict] = None,
+    noise: Union[None, str, float, dict] = None,
     bounds: Optional[dict] = None,
     samples: int = 256,
     alternatives: int = 3,
@@ -260,11 +268,15 @@ def plan(
     probability under execution noise. Returns the plan (formats.md, "Plan"; ``to_dict()`` is
     the JSON document).
 
-    ``noise``: standard deviations, e.g. ``{"aim": 0.002, "speed": 0.02, "offset": 0.001}``
-    (rad, fraction of the speed, m); ``bounds``: intervals, e.g. ``{"speed": (0.3, 6.0)}``
-    (keys ``speed`` m/s, ``elevation`` rad, ``side`` and ``height`` m). Bad requests raise
-    ``ValueError`` naming the argument (``noise['aim']``, ``cue_to``); a ball that cannot be
-    potted raises ``CannotPot``.
+    ``noise``: the execution noise: ``"standard"`` (the default: the computational pool
+    tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
+    0.5 mm), ``0`` (none), or a dict of standard deviations changing the standard noise, e.g.
+    ``{"aim": 0.002, "speed": 0.04}`` (keys ``aim``, ``elevation`` rad, ``speed`` m/s,
+    ``side``, ``height`` m; ``offset`` sets both side and height; before, ``speed`` was a
+    fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``:
+    intervals, e.g. ``{"speed": (0.3, 6.0)}`` (keys ``speed`` m/s, ``elevation`` rad, ``side``
+    and ``height`` m). Bad requests raise ``ValueError`` naming the argument (``noise['aim']``,
+    ``cue_to``); a ball that cannot be potted raises ``CannotPot``.
     """
 
     x, y = (float(c) for c in cue_to)
@@ -274,7 +286,7 @@ def plan(
         pocket,
         [x, y],
         float(tolerance),
-        {k: float(v) for k, v in (noise or {}).items()},
+        _noise(noise),
         {k: (float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()},
         int(samples),
         int(alternatives),
@@ -282,6 +294,75 @@ def plan(
         cue_ball,
     )
     return Plan.from_dict(doc)
+
+
+def play(
+    source: FrameLike,
+    noise: Union[None, str, float, dict] = None,
+    seed: int = 1,
+    effort: int = 4000,
+    visit: bool = True,
+    agent: str = "player",
+    opponent: str = "player",
+    max_strokes: int = 300,
+) -> List[Stroke]:
+    """Plays from a frame as ``snooker play`` does: the player chooses every stroke (candidate
+    pots of every kind planned by the planner, sampled under the execution noise, valued by
+    the points and the position left; a safety when no pot is worth its risk; the cue ball in
+    hand placed in the D), the stroke is played with the noise added and judged by the rules,
+    until the player at the table misses or fouls (``visit=True``: one break) or the frame
+    ends (``visit=False``: ``agent`` for the side to play, ``opponent`` for the other; a frame
+    still going after ``max_strokes`` stops there). Returns the strokes (the play log's lines,
+    formats.md "Play log", as objects; ``to_dict()`` is the line).
+
+    ``noise`` as for ``plan`` (``"standard"``, ``0`` or a dict of standard deviations); given
+    ``seed`` and ``effort`` (the search's budget per stroke in simulated shots) the strokes are
+    the same on any machine and any number of threads. Agents: ``"player"`` or ``"greedy"``
+    (the likeliest pot, no position play, no safety)."""
+    lines = _snooker.play(
+        frame(source),
+        _noise(noise),
+        int(seed),
+        int(effort),
+        bool(visit),
+        str(agent),
+        str(opponent),
+        int(max_strokes),
+    )
+    return [Stroke.from_dict(line) for line in lines]
+
+
+def choose(
+    source: FrameLike,
+    noise: Union[None, str, float, dict] = None,
+    seed: int = 1,
+    stroke: int = 1,
+    effort: int = 4000,
+    agent: str = "player",
+) -> Decision:
+    """The stroke the player (or ``agent="greedy"``) chooses for a frame, expecting the
+    execution ``noise``: where the cue ball in hand goes, the nomination, the strike meant
+    (a dict of it is what ``Frame.play`` takes: ``decision.strike.to_dict()``) and what was
+    planned. Its random draws come from (``seed``, ``stroke``): the same arguments, the same
+    decision."""
+    doc = _snooker.choose(
+        frame(source), _noise(noise), int(seed), int(stroke), int(effort), str(agent)
+    )
+    return Decision.from_dict(doc)
+
+
+def _noise(noise) -> dict:
+    """The noise argument as the extension takes it: standard deviations by name, changing
+    the standard noise."""
+    if noise is None or (isinstance(noise, str) and noise == "standard"):
+        return {}
+    if isinstance(noise, str):
+        raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+    if isinstance(noise, dict):
+        return {str(k): float(v) for k, v in noise.items()}
+    if float(noise) == 0.0:
+        return {k: 0.0 for k in ("aim", "elevation", "speed", "side", "height")}
+    raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
 
 
 def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> ImpactReport:

@@ -142,6 +142,26 @@ def plan(
     cue_ball: str = "cue",
 ) -> Dict[str, Any]:
     """The plan document as Python values (``snooker.Plan.from_dict`` reads it)."""
+def play(
+    frame: Frame,
+    noise: Optional[Dict[str, float]] = None,
+    seed: int = 1,
+    effort: int = 4000,
+    visit: bool = True,
+    agent: str = "player",
+    opponent: str = "player",
+    max_strokes: int = 300,
+) -> List[Dict[str, Any]]:
+    """The play log's lines as Python values (``snooker.Stroke.from_dict`` reads each)."""
+def choose(
+    frame: Frame,
+    noise: Optional[Dict[str, float]] = None,
+    seed: int = 1,
+    stroke: int = 1,
+    effort: int = 4000,
+    agent: str = "player",
+) -> Dict[str, Any]:
+    """One decision as Python values (``snooker.Decision.from_dict`` reads it)."""
 def impact_ball_ball(
     speed: float,
     cut: float = 0.0,

@@ -29,6 +29,9 @@ __all__ = [
     "BallAfter",
     "ImpactInput",
     "ImpactReport",
+    "Considered",
+    "Stroke",
+    "Decision",
 ]
 
 Vec3 = Tuple[float, float, float]
@@ -216,9 +219,13 @@ class Strike(_Record):
 
 @dataclass(frozen=True)
 class Route(_Record):
-    """The cue ball's route: the ``cushions`` it meets after the object ball and its ``spin``
-    (``screw``, ``stun`` or ``follow``)."""
+    """The shot's route: the ``kind`` of pot (``direct``, ``double``, ``plant``, ``kiss``),
+    what it goes ``via`` (the ball planted through or kissed, or the double's cushions), the
+    ``cushions`` the cue ball meets after its first ball and its ``spin`` (``screw``, ``stun``
+    or ``follow``)."""
 
+    kind: str
+    via: List[str]
     cushions: List[str]
     spin: str
 
@@ -266,7 +273,12 @@ class PlannedShot(_Record):
             d["potted"],
             tuple(d["cue_final"]),
             d["distance"],
-            Route(list(d["route"]["cushions"]), d["route"]["spin"]),
+            Route(
+                d["route"]["kind"],
+                list(d["route"]["via"]),
+                list(d["route"]["cushions"]),
+                d["route"]["spin"],
+            ),
             Robustness.from_dict(d["robustness"]),
         )
 
@@ -398,4 +410,127 @@ class ImpactReport(_Record):
             d["impulse"],
             d.get("normal_speed"),
             d["units"],
+        )
+
+
+@dataclass(frozen=True)
+class Considered(_Record):
+    """A stroke the player considered (formats.md, "Play log", ``plan``): the ball to ``pot``
+    and the ``pocket`` (``""`` for a safety), the ``kind`` (``direct``, ``double``, ``plant``,
+    ``kiss`` or ``safety``), its ``pot_probability`` under the noise, where the cue ball stops
+    played exactly (``cue_to``, m), the ``ball`` the cue ball is sent at first, what the pot
+    goes ``via`` (the ball planted through or kissed, the double's cushions), its expected
+    ``value`` in points and the noise ``samples`` simulated for it."""
+
+    pot: str
+    pocket: str
+    kind: str
+    pot_probability: float
+    cue_to: Tuple[float, float]
+    ball: str
+    via: List[str]
+    value: float
+    samples: int
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Considered":
+        return cls(
+            d["pot"],
+            d["pocket"],
+            d["kind"],
+            d["pot_probability"],
+            tuple(d["cue_to"]),
+            d["ball"],
+            list(d["via"]),
+            d["value"],
+            d["samples"],
+        )
+
+
+@dataclass(frozen=True)
+class Stroke(_Record):
+    """One stroke played (a line of the play log, formats.md "Play log"): its number
+    (``stroke``), the ``player`` at the table (0 or 1), the ``frame`` before it as frame TOML
+    (the cue ball placed and the nomination made: ``snooker.frame(stroke.frame)`` reads it),
+    the colour ``nominated`` (``""`` for none), the strike ``intended`` and the one
+    ``executed`` (intended + execution noise), the ``plan`` chosen and the ``alternatives``
+    considered, the ``referee``'s result of the executed strike (a dict, formats.md "Referee
+    result" without ``shot``), the ``decision_time`` (s), the ``agent`` and the
+    ``shots_simulated`` to decide."""
+
+    stroke: int
+    player: int
+    frame: str
+    nominated: str
+    intended: Strike
+    executed: Strike
+    plan: Considered
+    alternatives: List[Considered]
+    referee: Dict[str, Any]
+    decision_time: float
+    agent: str
+    shots_simulated: int
+
+    @property
+    def points(self) -> int:
+        """Points the stroke scored (0 for a foul)."""
+        return int(self.referee["points"])
+
+    @property
+    def foul(self) -> Optional[str]:
+        """The foul's reason, None for a legal stroke."""
+        f = self.referee.get("foul")
+        return f["reason"] if isinstance(f, dict) else f
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Stroke":
+        plan = dict(d["plan"])
+        alternatives = plan.pop("alternatives", [])
+        return cls(
+            d["stroke"],
+            d["player"],
+            d["frame"],
+            d["nominated"],
+            Strike.from_dict(d["intended"]),
+            Strike.from_dict(d["executed"]),
+            Considered.from_dict(plan),
+            [Considered.from_dict(a) for a in alternatives],
+            dict(d["referee"]),
+            d["decision_time"],
+            d["agent"],
+            d["shots_simulated"],
+        )
+
+    def to_dict(self) -> dict:
+        """The play log's line (the alternatives inside ``plan``, as the log writes them)."""
+        d = _document(self)
+        alternatives = d.pop("alternatives")
+        d["plan"]["alternatives"] = alternatives
+        order = ["stroke", "player", "frame", "nominated", "intended", "executed", "plan",
+                 "referee", "decision_time", "agent", "shots_simulated"]
+        return {k: d[k] for k in order}
+
+
+@dataclass(frozen=True)
+class Decision(_Record):
+    """One stroke chosen (``snooker.choose``): where the cue ball in hand goes (``cue_ball``,
+    m, None when not in hand), the colour ``nominated`` (None for none), the ``strike`` meant,
+    the ``plan`` and the ``alternatives``, and the ``shots_simulated`` to decide."""
+
+    cue_ball: Optional[Tuple[float, float]]
+    nominated: Optional[str]
+    strike: Strike
+    plan: Considered
+    alternatives: List[Considered]
+    shots_simulated: int
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Decision":
+        return cls(
+            tuple(d["cue_ball"]) if d["cue_ball"] is not None else None,
+            d["nominated"],
+            Strike.from_dict(d["strike"]),
+            Considered.from_dict(d["plan"]),
+            [Considered.from_dict(a) for a in d["alternatives"]],
+            d["shots_simulated"],
         )

@@ -15,6 +15,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+mod play;
 mod rules;
 
 create_exception!(
@@ -235,11 +236,14 @@ fn argument(field: RequestField) -> String {
         RequestField::Samples => "samples".into(),
         RequestField::Bounds(v) => format!("bounds['{}']", v.name()),
         RequestField::Noise(c) => format!("noise['{}']", c.name()),
+        RequestField::Kinds => "kinds".into(),
+        RequestField::PlantBalls => "plant_balls".into(),
     }
 }
 
 /// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as Python values.
-/// `noise` maps `aim`, `speed`, `offset` to standard deviations; `bounds` maps `speed`,
+/// `noise` maps `aim`, `elevation`, `speed`, `side`, `height` (rad, m/s, m; `offset` for both
+/// side and height) to standard deviations changing the standard noise; `bounds` maps `speed`,
 /// `elevation`, `side`, `height` to (low, high).
 #[pyfunction]
 #[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise=None, bounds=None,
@@ -275,10 +279,23 @@ fn plan<'py>(
         seed,
         ..Request::new(pot, pocket, cue_to, &p)
     };
-    for (name, sd) in noise.unwrap_or_default() {
+    let noise = noise.unwrap_or_default();
+    if noise.contains_key("offset") && noise.contains_key("speed") {
+        return Err(PyValueError::new_err(
+            "noise: the old spelling (speed as a fraction of the cue speed, one offset) is no \
+             longer read: speed is now in m/s (the old speed=F at cue speed V is F*V) and \
+             offset is side and height",
+        ));
+    }
+    for (name, sd) in noise {
+        if name == "offset" {
+            request.noise.side = sd;
+            request.noise.height = sd;
+            continue;
+        }
         let c = NoiseComponent::from_name(&name).ok_or_else(|| {
             PyValueError::new_err(format!(
-                "noise['{name}']: unknown noise (aim, speed, offset)"
+                "noise['{name}']: unknown noise (aim, elevation, speed, side, height; or offset)"
             ))
         })?;
         request.noise.set(c, sd);
@@ -383,6 +400,8 @@ fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add_function(wrap_pyfunction!(play::play, m)?)?;
+    m.add_function(wrap_pyfunction!(play::choose, m)?)?;
     m.add_function(wrap_pyfunction!(impact_ball_ball, m)?)?;
     m.add_function(wrap_pyfunction!(impact_cushion, m)?)?;
     m.add("SimulationError", m.py().get_type::<SimulationError>())?;

@@ -1,5 +1,5 @@
 //! Whole-shot simulation time: the break-off (22 balls) and a two-ball shot.
-//! Run with `cargo bench -p snooker-scene --bench shots`; medians are quoted in the README.
+//! Run with `cargo bench -p snooker-scene --bench shots`; medians are quoted in docs/performance.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use snooker_scene as scene;

@@ -1,4 +1,4 @@
-//! The scene file's schema (TOML; the contract in `shared/formats.md`, extended in the README):
+//! The scene file's schema (TOML; the contract of docs/formats.md, with its extensions):
 //! every key typed, unknown keys rejected, arrays of exactly the documented length. The same
 //! types are the scene builder of code that makes scenes (the batch sets, the fuzz harness,
 //! the planner's test positions, Python's dicts): built with [`SceneFile::new`] and its

@@ -1,8 +1,9 @@
 //! Scene files (TOML) and the JSON result of the snooker engine: one home for the formats
-//! scripts outside the project read (the contract in `shared/formats.md`, extended in the
-//! README). A scene file becomes an engine [`Setup`] with the cue strike applied, its limits
-//! and a record of the strike; every bad input is one [`SceneError`] naming the file, the key
-//! and the reason. Used by the `snooker` command line, the validation crate and the planner.
+//! scripts outside the project read (the contract in `shared/formats.md`, copied and
+//! extended in docs/formats.md). A scene file becomes an engine [`Setup`] with the cue strike
+//! applied, its limits and a record of the strike; every bad input is one [`SceneError`]
+//! naming the file, the key and the reason. Used by the `snooker` command line, the
+//! validation crate and the planner.
 //!
 //! ```
 //! let scene = snooker_scene::parse(snooker_scene::DEFAULT_SCENE, "break-off.toml").unwrap();

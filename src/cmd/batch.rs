@@ -21,7 +21,7 @@ pub struct Args {
     pub scenes: PathBuf,
     /// Where the results go: JSON lines (one result per scene, as `simulate --json` writes
     /// it, plus its `source`), or, for a name ending in `.parquet`, a table of per-shot
-    /// summaries (see the README).
+    /// summaries (the book's "Many shots" page, docs/python.md).
     #[arg(long, value_name = "RESULTS")]
     pub out: PathBuf,
     /// Threads to simulate on (default: every core).

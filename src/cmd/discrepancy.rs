@@ -13,7 +13,7 @@ use std::process::ExitCode;
 /// Arguments of `snooker discrepancy`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The measured data file (TOML; see the README).
+    /// The measured data file (TOML; docs/discrepancy.md).
     data: PathBuf,
     /// A model file ([params] and [models] as in a scene) to start from instead of the
     /// scenes' own model.

@@ -22,6 +22,7 @@ pub mod batch;
 pub mod discrepancy;
 pub mod impact;
 pub mod plan;
+pub mod play;
 pub mod referee;
 pub mod serve;
 pub mod simulate;
@@ -47,4 +48,31 @@ pub fn bad_input(message: impl std::fmt::Display) -> ExitCode {
 pub fn failed(message: impl std::fmt::Display) -> ExitCode {
     eprintln!("error: {message}");
     ExitCode::from(FAILED)
+}
+
+/// Writes a recording's bytes to `out` (atomically) and, unless `quiet`, says where, on
+/// standard error when standard output carries the JSON; a write error is bad input.
+pub fn write_recording(
+    out: &std::path::Path,
+    bytes: &[u8],
+    quiet: bool,
+    json_to_stdout: bool,
+) -> Result<(), ExitCode> {
+    use std::io::Write as _;
+    if let Err(e) = crate::output::write_atomic(out, bytes) {
+        return Err(bad_input(format!("--record {}: {e:#}", out.display())));
+    }
+    if !quiet {
+        let note = format!(
+            "recording written to {0} (open it with `rerun {0}`)",
+            out.display()
+        );
+        // Standard output may be carrying the JSON; a closed pipe is no error here.
+        let _ = if json_to_stdout {
+            writeln!(std::io::stderr(), "{note}")
+        } else {
+            writeln!(std::io::stdout(), "{note}")
+        };
+    }
+    Ok(())
 }

@@ -2,14 +2,14 @@
 //! (thesis chapter 7), with its robustness to execution noise and genuinely different
 //! alternatives; the scene with that strike, the plan as JSON, and a recording.
 
-use super::{bad_input, failed};
+use super::{bad_input, failed, spec};
 use crate::{output, record};
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
 use snooker_engine::Vec3;
 use snooker_planner::{
-    self as planner, Bounds, Interval, Noise, NoiseComponent, Plan, PlanError, Problem, Request,
-    RequestField, StrikeVariable,
+    self as planner, Bounds, Interval, Noise, Plan, PlanError, Problem, Request, RequestField,
+    ShotKind, StrikeVariable,
 };
 use snooker_scene as scene;
 use std::path::{Path, PathBuf};
@@ -34,8 +34,11 @@ pub struct Args {
     /// Distance to the target that counts as reached, m.
     #[arg(long, default_value_t = 0.001)]
     pub tolerance: f64,
-    /// Execution noise (standard deviations): aim in rad, speed as a fraction of the speed,
-    /// offset in m; e.g. "aim=0.002,speed=0.02,offset=0.001" (the default).
+    /// Execution noise (standard deviations): "standard" (the default: the computational pool
+    /// tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
+    /// 0.5 mm), "standard*K", "0", or NAME=VALUE items changing it (aim, elevation in rad,
+    /// speed in m/s, side, height in m), e.g. "0,aim=0.002". Before, speed was a fraction of
+    /// the cue speed and offset one value for both offsets: offset=M is still side=M,height=M.
     #[arg(long, value_name = "SPEC")]
     pub noise: Option<String>,
     /// Monte Carlo samples per shot for its pot probability.
@@ -51,6 +54,12 @@ pub struct Args {
     /// The ball struck.
     #[arg(long, default_value = "cue")]
     pub cue_ball: String,
+    /// The kinds of pot tried, comma-separated: direct (cue ball, object ball, pocket), double
+    /// (the object ball off one or two cushions), plant (through another ball), kiss (the
+    /// object ball glancing off another ball). Direct pots are tried first, the others when
+    /// those do not reach the target.
+    #[arg(long, value_name = "KINDS", default_value = "direct,double,plant,kiss")]
+    pub kinds: String,
     /// Write the plan as JSON to this file, or to standard output with `-`.
     #[arg(long, value_name = "OUT")]
     pub json: Option<String>,
@@ -102,6 +111,9 @@ fn flag(field: RequestField) -> String {
         RequestField::Samples => "--samples".into(),
         RequestField::Bounds(v) => format!("--bounds {}", v.name()),
         RequestField::Noise(c) => format!("--noise {}", c.name()),
+        RequestField::Kinds => "--kinds".into(),
+        // Not a flag: the command lets a plant strike any ball first.
+        RequestField::PlantBalls => "plant balls".into(),
     }
 }
 
@@ -144,27 +156,24 @@ fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
     Ok(bounds)
 }
 
-/// `noise` with the standard deviations of `spec` ("aim=0.002,speed=0.02,offset=0.001").
-fn parse_noise(spec: &str, mut noise: Noise) -> Result<Noise, String> {
-    for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-        let (name, value) = part
-            .split_once('=')
-            .ok_or_else(|| format!("--noise {part}: expected NAME=VALUE"))?;
-        let c = NoiseComponent::from_name(name.trim()).ok_or_else(|| {
-            format!(
-                "--noise {part}: unknown noise `{}` (aim, speed, offset)",
-                name.trim()
-            )
-        })?;
-        let v = value
-            .trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|v| v.is_finite() && *v >= 0.0)
-            .ok_or_else(|| format!("--noise {part}: expected a finite number >= 0"))?;
-        noise.set(c, v);
+/// The kinds of pot named in `spec` ("direct,double,plant,kiss").
+fn parse_kinds(spec: &str) -> Result<Vec<ShotKind>, String> {
+    let mut kinds = Vec::new();
+    for name in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let k = ShotKind::ALL
+            .into_iter()
+            .find(|k| k.name() == name)
+            .ok_or_else(|| {
+                format!("--kinds {spec}: unknown kind `{name}` (direct, double, plant, kiss)")
+            })?;
+        if !kinds.contains(&k) {
+            kinds.push(k);
+        }
     }
-    Ok(noise)
+    if kinds.is_empty() {
+        return Err(format!("--kinds {spec}: name at least one kind"));
+    }
+    Ok(kinds)
 }
 
 /// Runs the command.
@@ -183,7 +192,11 @@ pub fn run(args: Args) -> ExitCode {
         Ok(t) => t,
         Err(e) => return bad_input(format!("--cue-to: {e}")),
     };
-    let noise = match parse_noise(args.noise.as_deref().unwrap_or(""), Noise::default()) {
+    let noise = match spec::noise(
+        "--noise",
+        args.noise.as_deref().unwrap_or(""),
+        Noise::STANDARD,
+    ) {
         Ok(n) => n,
         Err(e) => return bad_input(e),
     };
@@ -192,6 +205,10 @@ pub fn run(args: Args) -> ExitCode {
         Bounds::default_for(&p),
     ) {
         Ok(b) => b,
+        Err(e) => return bad_input(e),
+    };
+    let kinds = match parse_kinds(&args.kinds) {
+        Ok(k) => k,
         Err(e) => return bad_input(e),
     };
     let json = args.json.as_deref();
@@ -215,6 +232,7 @@ pub fn run(args: Args) -> ExitCode {
         samples: args.samples,
         alternatives: args.alternatives,
         seed: args.seed,
+        kinds,
         ..Request::new(&args.pot, &args.pocket, target, &p)
     };
     let problem = match Problem::new(&scene, request) {
@@ -330,8 +348,8 @@ fn summary(plan: &Plan) -> String {
         let st = &s.strike;
         format!(
             "{tag:<6} speed {:.3} m/s, aim {:.5} rad, offset ({:+.1}, {:+.1}) mm, elevation {:.3} rad \
-             -> cue ball at ({:.4}, {:.4}), {:.1} mm from the target; {} via [{}]; pots {:.0} % \
-             under noise, ends spread {:.0} mm\n",
+             -> cue ball at ({:.4}, {:.4}), {:.1} mm from the target; {}{}; {} via [{}]; pots \
+             {:.0} % under noise, ends spread {:.0} mm\n",
             st.speed,
             st.aim,
             st.offset[0] * 1e3,
@@ -340,6 +358,12 @@ fn summary(plan: &Plan) -> String {
             s.cue_final[0],
             s.cue_final[1],
             s.distance * 1e3,
+            s.route.kind.name(),
+            if s.route.via.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", s.route.via.join(", "))
+            },
             s.route.spin,
             s.route.cushions.join(", "),
             100.0 * s.robustness.pot_probability,

@@ -249,21 +249,10 @@ pub fn run(args: Args) -> ExitCode {
             ),
         }
     }
-    if let Some((out, bytes)) = recording {
-        if let Err(e) = output::write_atomic(out, &bytes) {
-            return bad_input(format!("--record {}: {e:#}", out.display()));
-        }
-        if !args.quiet {
-            let note = format!(
-                "recording written to {0} (open it with `rerun {0}`)",
-                out.display()
-            );
-            let _ = if json_to_stdout {
-                writeln!(std::io::stderr(), "{note}")
-            } else {
-                writeln!(std::io::stdout(), "{note}")
-            };
-        }
+    if let Some((out, bytes)) = recording
+        && let Err(code) = super::write_recording(out, &bytes, args.quiet, json_to_stdout)
+    {
+        return code;
     }
     ExitCode::SUCCESS
 }

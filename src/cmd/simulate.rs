@@ -11,7 +11,7 @@ use std::process::ExitCode;
 /// Arguments of `snooker simulate`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Scene file (TOML); see the README for the format.
+    /// Scene file (TOML); the format is the book's "File formats" page (docs/formats.md).
     pub scene: Option<PathBuf>,
     /// Write the result as JSON to this file, or to standard output with `-`.
     #[arg(long, value_name = "OUT")]
@@ -106,22 +106,10 @@ pub fn run(args: Args) -> ExitCode {
             outln!("result written to {out}");
         }
     }
-    if let Some((out, bytes)) = recording {
-        if let Err(e) = output::write_atomic(&out, &bytes) {
-            return bad_input(format!("--record {}: {e:#}", out.display()));
-        }
-        if !args.quiet {
-            let note = format!(
-                "recording written to {0} (open it with `rerun {0}`)",
-                out.display()
-            );
-            // Standard output may be carrying the JSON; a closed pipe is no error here.
-            let _ = if json_to_stdout {
-                writeln!(std::io::stderr(), "{note}")
-            } else {
-                writeln!(std::io::stdout(), "{note}")
-            };
-        }
+    if let Some((out, bytes)) = recording
+        && let Err(code) = super::write_recording(&out, &bytes, args.quiet, json_to_stdout)
+    {
+        return code;
     }
     ExitCode::SUCCESS
 }

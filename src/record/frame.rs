@@ -138,6 +138,16 @@ pub fn encode_strokes(
     strokes: &[RecordedStroke],
     opts: &RecordOptions,
 ) -> Result<Vec<u8>, RecordError> {
+    encode_strokes_with(strokes, opts, |_, _| Ok(()))
+}
+
+/// As [`encode_strokes`], then `extra` logs what the caller adds (a player's plans), given
+/// the recording and when each stroke starts on the timeline ([`super::TIMELINE`]).
+pub fn encode_strokes_with(
+    strokes: &[RecordedStroke],
+    opts: &RecordOptions,
+    extra: impl FnOnce(&RecordingStream, &[f64]) -> Result<(), RecordError>,
+) -> Result<Vec<u8>, RecordError> {
     let Some(first) = strokes.first() else {
         return Err(RecordError::Rerun("no stroke to record".into()));
     };
@@ -155,7 +165,10 @@ pub fn encode_strokes(
         strike: None,
     };
     super::encode_with(&scene, &shot, opts, &[], |rec| {
-        log_frame(rec, strokes, &starts)
+        log_frame(rec, strokes, &starts)?;
+        extra(rec, &starts)?;
+        rec.reset_time();
+        Ok(())
     })
 }
 

@@ -86,7 +86,7 @@ pub enum RecordError {
     Rerun(String),
 }
 
-fn rerun_err(e: impl std::fmt::Display) -> RecordError {
+pub(crate) fn rerun_err(e: impl std::fmt::Display) -> RecordError {
     RecordError::Rerun(e.to_string())
 }
 

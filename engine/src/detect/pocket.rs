@@ -1,6 +1,6 @@
 //! Pocket capture: a ball on the cloth drops once its centre enters the fall circle (plan).
 //!
-//! A ball in the air over a pocket's opening (the pocket geometry is the README's Table
+//! A ball in the air over a pocket's opening (the pocket geometry is docs/physics.md's Table
 //! section: the fall circle behind the mouth, its front touching the line joining the jaw
 //! points) drops in, or flies over it:
 //! - its lowest point below the nose's height when its centre enters the fall: it is below the

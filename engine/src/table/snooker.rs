@@ -10,7 +10,7 @@
 //! the baulk cushion face, D radius 292 mm, black spot 324 mm from the top cushion face, pink
 //! midway between the centre spot and the top cushion). The WPBSA pocket templates are not
 //! public: the pocket openings are the thesis's 90 mm for all six (thesis §8.5); jaw radius,
-//! facing angles and fall position are stated assumptions, documented in the README.
+//! facing angles and fall position are stated assumptions, documented in docs/physics.md.
 
 use super::{Cushion, Jaw, Pocket, Table, TableKind};
 use crate::ball::Vec3;

@@ -188,7 +188,7 @@ between the runs; none is a fitted number. With a_s = μ_s g, a_r = μ_r g:
 - **Landing.** Our engine neglects the landing's friction percussion (thesis §6.1.6), rapier's
   cloth has it; the landing is a cut of the frictional runs and its bound is part of the
   frictionless runs' propagated tolerances. Our airborne balls meet cushions and pockets by
-  their plan position (README, "Known limitations"); the scenes keep airborne balls clear of
+  their plan position (the book's Limitations page); the scenes keep airborne balls clear of
   them.
 - **Hypersensitive shots.** Where a grazing contact amplifies the step's share (a ball glancing
   off one jaw into the other, rattling in a corner's jaws) the tolerances after it grow to

@@ -1,0 +1,187 @@
+//! The pots open from a frame: every ball on into every pocket (with the nomination that makes
+//! it the ball on), each a planner problem on the frame's balls, and every line of each that
+//! the planner's geometry leaves open (direct, doubles, plants through a ball on, kisses),
+//! ranked by a first estimate of what it is worth.
+
+use crate::chance::Direct;
+use crate::value::{Valuer, ball_value};
+use snooker_engine::{BallKind, Setup, Vec3};
+use snooker_planner::{Bounds, Interval, Line, Problem, Request, ShotKind};
+use snooker_rules::{Colour, Frame, On};
+
+/// Elevation of the cue for every stroke, rad (2°: a cue just clear of the cushion rail; far
+/// enough from level that the elevation's noise never reaches it: 20 standard deviations of
+/// the standard noise).
+pub const ELEVATION: f64 = 2.0 * std::f64::consts::PI / 180.0;
+/// The first estimate of a line that is not a direct pot, as a share of the ball's worth:
+/// below any direct pot worth trying, so that doubles, plants and kisses are planned when the
+/// budget allows after the direct pots, or when there is none.
+pub const OTHER_LINE_PRIOR: f64 = 0.1;
+
+/// A ball on and a pocket: the planner's problem of potting it, on the frame with the
+/// nomination that makes it the ball on.
+#[derive(Debug)]
+pub struct Target {
+    /// Index of the ball (in the frame's balls).
+    pub ball: usize,
+    /// Index of the pocket (in the table's pockets).
+    pub pocket: usize,
+    /// The nomination the stroke needs.
+    pub nominated: Option<Colour>,
+    /// The frame with that nomination.
+    pub frame: Frame,
+    /// The planner's problem.
+    pub problem: Problem,
+}
+
+/// A line to try: its target and a first estimate of its worth (points).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineCandidate {
+    /// Index into the targets.
+    pub target: usize,
+    /// The line.
+    pub line: Line,
+    /// Estimated worth, points (chance times the ball's worth).
+    pub estimate: f64,
+    /// The pot's chance in closed form ([`Direct::chance`]; [`OTHER_LINE_PRIOR`] for a line
+    /// that is not a direct pot).
+    pub chance: f64,
+}
+
+/// The nomination a stroke at the ball of `kind` needs in `frame`, if one is needed: the
+/// colour itself when a colour is on (or played as a free ball); with a free ball and a red
+/// played, any colour that may be nominated (the red is on anyway).
+pub fn nomination(frame: &Frame, kind: BallKind) -> Option<Colour> {
+    let s = frame.state();
+    let needed = s.on == On::Colour || s.free_ball;
+    if !needed {
+        return None;
+    }
+    match Colour::of(kind) {
+        Some(c) if frame.legal_nominations().contains(&c) => Some(c),
+        _ => frame.legal_nominations().first().copied(),
+    }
+}
+
+/// The search's bounds for the player's strokes: the planner's default speeds and offsets,
+/// the cue at [`ELEVATION`].
+pub fn bounds(frame: &Frame) -> Bounds {
+    let mut b = Bounds::default_for(frame.params());
+    b.elevation = Interval {
+        lo: ELEVATION,
+        hi: ELEVATION,
+    };
+    b
+}
+
+/// The planner's problem of potting ball `ball` of `frame` in pocket `pocket`, with plants
+/// allowed through the balls in `plant_balls`.
+pub fn problem(
+    frame: &Frame,
+    ball: usize,
+    pocket: usize,
+    plant_balls: &[String],
+) -> Option<Problem> {
+    let cue = frame.cue_index()?;
+    let balls = frame.balls();
+    let at = balls[cue].state.pos;
+    let mut req = Request::new(
+        &balls[ball].id,
+        &frame.table().pockets[pocket].name,
+        [at.x, at.y],
+        frame.params(),
+    );
+    req.cue_ball = balls[cue].id.clone();
+    req.bounds = bounds(frame);
+    req.samples = 1;
+    req.alternatives = 0;
+    req.plant_balls = Some(plant_balls.to_vec());
+    let setup = Setup {
+        table: frame.table().clone(),
+        params: *frame.params(),
+        models: *frame.models(),
+        balls: balls.to_vec(),
+    };
+    Problem::for_setup(setup, *frame.options(), req).ok()
+}
+
+/// Every ball on of `frame` (the cue ball placed) into every pocket.
+pub fn targets(frame: &Frame) -> Vec<Target> {
+    let s = frame.state();
+    let balls = frame.balls();
+    // A plant's first ball must be on as well: another red with reds on (a free ball is
+    // never planted).
+    let plant_balls: Vec<String> = if s.on == On::Red && !s.free_ball {
+        balls
+            .iter()
+            .filter(|b| b.kind == BallKind::Red)
+            .map(|b| b.id.clone())
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut out = Vec::new();
+    for b in frame.balls_on() {
+        let nominated = nomination(frame, balls[b].kind);
+        let Ok(f) = frame.with_nomination(nominated) else {
+            continue;
+        };
+        if !f.is_on(balls[b].kind) {
+            continue;
+        }
+        let plants: Vec<String> = plant_balls
+            .iter()
+            .filter(|id| **id != balls[b].id)
+            .cloned()
+            .collect();
+        for pocket in 0..frame.table().pockets.len() {
+            if let Some(problem) = problem(&f, b, pocket, &plants) {
+                out.push(Target {
+                    ball: b,
+                    pocket,
+                    nominated,
+                    frame: f.clone(),
+                    problem,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// The open lines of `targets`, best estimate first (ties in the targets' order).
+pub fn lines(targets: &[Target], valuer: &Valuer) -> Vec<LineCandidate> {
+    let mut out = Vec::new();
+    for (k, t) in targets.iter().enumerate() {
+        let f = &t.frame;
+        let r = f.params().ball_radius;
+        let balls = f.balls();
+        let value = ball_value(f, balls[t.ball].kind);
+        let worth = value + valuer.future(f, value);
+        let Some(cue) = f.cue_index() else {
+            continue;
+        };
+        let flat = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
+        let pocket = &f.table().pockets[t.pocket];
+        for line in t.problem.requested_lines() {
+            let chance = match line.kind {
+                ShotKind::Direct => Direct::new(
+                    flat(balls[cue].state.pos),
+                    flat(balls[t.ball].state.pos),
+                    pocket,
+                    r,
+                )
+                .map_or(0.0, |d| d.chance(pocket, valuer.sd, r)),
+                _ => OTHER_LINE_PRIOR,
+            };
+            out.push(LineCandidate {
+                target: k,
+                line,
+                estimate: chance * worth,
+                chance,
+            });
+        }
+    }
+    out.sort_by(|a, b| b.estimate.total_cmp(&a.estimate));
+    out
+}

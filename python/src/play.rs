@@ -1,0 +1,151 @@
+//! The player from Python (the snooker-player crate): `play` plays a visit or a frame under
+//! execution noise and hands back the play log's lines (formats.md, "Play log") as Python
+//! values; `choose` is one decision, for an agent that plays strokes itself (the Gymnasium
+//! environment's baseline). Both run with the GIL released.
+
+use crate::rules::Frame;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use serde::Serialize;
+use snooker_planner::{Noise, NoiseComponent, StrikeSpec};
+use snooker_player::{
+    Agent, Considered, Context, Greedy, PlayOptions, Player, Until, game::DEFAULT_MAX_STROKES,
+};
+use std::collections::BTreeMap;
+
+/// The noise from standard deviations by name changing the standard noise (`offset` sets
+/// both side and height), checked.
+fn noise(given: BTreeMap<String, f64>) -> PyResult<Noise> {
+    let mut n = Noise::STANDARD;
+    for (name, sd) in given {
+        if name == "offset" {
+            n.side = sd;
+            n.height = sd;
+            continue;
+        }
+        let c = NoiseComponent::from_name(&name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "noise['{name}']: unknown noise (aim, elevation, speed, side, height; or offset)"
+            ))
+        })?;
+        n.set(c, sd);
+    }
+    n.check()
+        .map_err(|e| PyValueError::new_err(format!("noise: {e}")))?;
+    Ok(n)
+}
+
+fn agent(name: &str, what: &str) -> PyResult<&'static dyn Agent> {
+    match name {
+        "player" => Ok(&Player),
+        "greedy" => Ok(&Greedy),
+        _ => Err(PyValueError::new_err(format!(
+            "{what}: \"{name}\" is not an agent (player, greedy)"
+        ))),
+    }
+}
+
+fn positive(v: u64, what: &str) -> PyResult<u64> {
+    if v == 0 {
+        Err(PyValueError::new_err(format!("{what}: must be at least 1")))
+    } else {
+        Ok(v)
+    }
+}
+
+/// Plays from `frame` as `snooker play` does: `agent` at the table (and `opponent` for the
+/// other side in a frame), every stroke with the execution noise added, judged by the rules,
+/// until the visit ends (`visit`) or the frame; the play log's lines as Python values.
+#[pyfunction]
+#[pyo3(signature = (frame, noise=None, seed=1, effort=snooker_player::game::DEFAULT_EFFORT,
+                    visit=true, agent="player", opponent="player",
+                    max_strokes=DEFAULT_MAX_STROKES))]
+#[allow(clippy::too_many_arguments)]
+pub fn play<'py>(
+    py: Python<'py>,
+    frame: &Frame,
+    noise: Option<BTreeMap<String, f64>>,
+    seed: u64,
+    effort: u64,
+    visit: bool,
+    agent: &str,
+    opponent: &str,
+    max_strokes: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let opts = PlayOptions {
+        noise: self::noise(noise.unwrap_or_default())?,
+        seed,
+        effort: positive(effort, "effort")?,
+        until: if visit { Until::Visit } else { Until::Frame },
+        max_strokes: positive(max_strokes as u64, "max_strokes")? as usize,
+    };
+    let me = self::agent(agent, "agent")?;
+    let other = self::agent(opponent, "opponent")?;
+    let frame = frame.0.clone();
+    let at = frame.state().to_play as usize;
+    let mut agents = [other, other];
+    agents[at] = me;
+    let lines = py
+        .detach(|| {
+            snooker_player::play(&frame, agents, &opts, |_| {}).map(|game| {
+                game.strokes
+                    .iter()
+                    .map(|s| serde_json::to_value(s.log_line()))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+        })
+        .map_err(|e| PyRuntimeError::new_err(format!("{}: {e}", frame.name())))?
+        .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    crate::to_python(py, &lines)
+}
+
+/// One decision as Python gets it.
+#[derive(Serialize)]
+struct DecisionDoc<'a> {
+    cue_ball: Option<[f64; 2]>,
+    nominated: Option<&'static str>,
+    strike: StrikeSpec,
+    plan: &'a Considered,
+    alternatives: &'a [Considered],
+    shots_simulated: u64,
+}
+
+/// The stroke `agent` chooses for `frame` (the `stroke`-th of a run seeded `seed`), expecting
+/// the execution noise `noise`: where the cue ball in hand goes, the nomination, the strike
+/// and what was planned.
+#[pyfunction]
+#[pyo3(signature = (frame, noise=None, seed=1, stroke=1,
+                    effort=snooker_player::game::DEFAULT_EFFORT, agent="player"))]
+pub fn choose<'py>(
+    py: Python<'py>,
+    frame: &Frame,
+    noise: Option<BTreeMap<String, f64>>,
+    seed: u64,
+    stroke: u64,
+    effort: u64,
+    agent: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let ctx = Context {
+        noise: self::noise(noise.unwrap_or_default())?,
+        seed,
+        stroke,
+        effort: positive(effort, "effort")?,
+    };
+    let who = self::agent(agent, "agent")?;
+    let frame = frame.0.clone();
+    let d = py
+        .detach(|| who.choose(&frame, &ctx))
+        .map_err(|e| PyValueError::new_err(format!("{}: {e}", frame.name())))?;
+    let cue_id = frame
+        .cue_index()
+        .map_or("cue".to_string(), |i| frame.balls()[i].id.clone());
+    let doc = DecisionDoc {
+        cue_ball: d.placement,
+        nominated: d.nominated.map(|c| c.name()),
+        strike: StrikeSpec::new(&cue_id, &d.strike),
+        plan: &d.plan,
+        alternatives: &d.alternatives,
+        shots_simulated: d.shots,
+    };
+    crate::to_python(py, &doc)
+}

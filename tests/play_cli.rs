@@ -1,0 +1,185 @@
+//! `snooker play`: every logged stroke replays exactly through `snooker referee` (its frame
+//! with `executed` as `[cue]` gives the logged verdict, and the strokes chain: each frame is
+//! the one the stroke before left, but for the player's choices); the same seed and effort
+//! give the same log on one thread and on two; a frame against the greedy baseline; bad input
+//! (exit 2, one message, nothing written).
+
+mod common;
+
+use common::{snooker, temp_dir};
+use serde_json::Value;
+use std::path::Path;
+
+const OPEN: &str = "scenes/frames/open-table.toml";
+
+fn lines(path: &Path) -> Vec<Value> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+/// The log's line as a frame file to referee: its frame with `executed` as `[cue]`.
+fn frame_with_strike(line: &Value) -> String {
+    let e = &line["executed"];
+    let num = |v: &Value| serde_json::to_string(v).unwrap();
+    format!(
+        "{}[cue]\nball = {}\nspeed = {}\naim = {}\noffset = [{}, {}]\nelevation = {}\n",
+        line["frame"].as_str().unwrap(),
+        num(&e["ball"]),
+        num(&e["speed"]),
+        num(&e["aim"]),
+        num(&e["offset"][0]),
+        num(&e["offset"][1]),
+        num(&e["elevation"])
+    )
+}
+
+fn play(dir: &Path, extra: &[&str], log: &str) -> std::process::Output {
+    let log = dir.join(log);
+    let mut args = vec!["play", OPEN, "--log", log.to_str().unwrap(), "--quiet"];
+    args.extend_from_slice(extra);
+    snooker(&args)
+}
+
+#[test]
+fn every_logged_stroke_replays_through_the_referee() {
+    let dir = temp_dir("play-replay");
+    // A frame against the greedy baseline, a few strokes: pots, misses and both players.
+    let o = play(
+        &dir,
+        &[
+            "--frame",
+            "--opponent",
+            "greedy",
+            "--seed",
+            "5",
+            "--effort",
+            "300",
+            "--max-strokes",
+            "8",
+        ],
+        "log.jsonl",
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let log = lines(&dir.join("log.jsonl"));
+    assert!(log.len() >= 2, "{} strokes", log.len());
+    let contract = [
+        "stroke",
+        "player",
+        "frame",
+        "nominated",
+        "intended",
+        "executed",
+        "plan",
+        "referee",
+        "decision_time",
+    ];
+    let mut files = Vec::new();
+    for (k, line) in log.iter().enumerate() {
+        let keys: Vec<&String> = line.as_object().unwrap().keys().collect();
+        assert_eq!(&keys[..contract.len()], contract, "line {k}");
+        let plan: Vec<&String> = line["plan"].as_object().unwrap().keys().collect();
+        assert_eq!(
+            &plan[..5],
+            ["pot", "pocket", "kind", "pot_probability", "cue_to"],
+            "line {k}"
+        );
+        assert!(line["referee"].get("shot").is_none());
+        assert_eq!(line["stroke"].as_u64(), Some(k as u64 + 1));
+        let file = dir.join(format!("stroke{}.toml", k + 1));
+        std::fs::write(&file, frame_with_strike(line)).unwrap();
+        let out = dir.join(format!("referee{}.json", k + 1));
+        let o = snooker(&[
+            "referee",
+            file.to_str().unwrap(),
+            "--json",
+            out.to_str().unwrap(),
+            "--quiet",
+        ]);
+        assert!(
+            o.status.success(),
+            "line {k}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let mut verdict: Value =
+            serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+        verdict.as_object_mut().unwrap().remove("shot");
+        // Floats compared exactly: the same JSON text.
+        assert_eq!(verdict, line["referee"], "line {k}");
+        files.push(file);
+    }
+    // The strokes chain: the referee checks each frame is the one the stroke before left,
+    // but for the cue ball placed in hand and the nomination.
+    let mut args = vec!["referee", "--quiet"];
+    args.extend(files.iter().map(|f| f.to_str().unwrap()));
+    let o = snooker(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn the_same_seed_and_effort_give_the_same_log_on_one_thread_and_two() {
+    let dir = temp_dir("play-threads");
+    let common = ["--seed", "11", "--effort", "300", "--max-strokes", "6"];
+    let mut one = common.to_vec();
+    one.extend(["--threads", "1"]);
+    let mut two = common.to_vec();
+    two.extend(["--threads", "2"]);
+    assert!(play(&dir, &one, "one.jsonl").status.success());
+    assert!(play(&dir, &two, "two.jsonl").status.success());
+    let strip = |mut v: Vec<Value>| {
+        // The wall time of a decision is the one field that may differ.
+        for l in &mut v {
+            l.as_object_mut().unwrap().remove("decision_time");
+        }
+        v
+    };
+    let (a, b) = (
+        strip(lines(&dir.join("one.jsonl"))),
+        strip(lines(&dir.join("two.jsonl"))),
+    );
+    assert!(!a.is_empty());
+    assert_eq!(a, b);
+}
+
+#[test]
+fn bad_input_exits_2_with_one_message_and_writes_nothing() {
+    let dir = temp_dir("play-bad");
+    let log = dir.join("log.jsonl");
+    for (extra, says) in [
+        (vec!["--noise", "loud"], "--noise"),
+        (vec!["--noise", "aim=0.002,speed=0.02,offset=0.001"], "m/s"),
+        (vec!["--effort", "0"], "--effort"),
+        (vec!["--opponent", "shark"], "--opponent"),
+        (vec!["--visit", "--frame"], "--frame"),
+    ] {
+        let mut args = vec!["play", OPEN, "--log", log.to_str().unwrap()];
+        args.extend(extra);
+        let o = snooker(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(!log.exists());
+    }
+    // A frame file with a bad [frame] table names its key.
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        std::fs::read_to_string(OPEN)
+            .unwrap()
+            .replace("on = \"red\"", "on = \"purple\""),
+    )
+    .unwrap();
+    let o = snooker(&[
+        "play",
+        bad.to_str().unwrap(),
+        "--log",
+        log.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("frame.on"), "{err}");
+    assert!(!log.exists());
+}
