@@ -129,7 +129,8 @@ impl Table {
         if outside && !self.in_mouth(pos, contact) {
             return Some(format!(
                 "centre ({:.4}, {:.4}) m is off the cloth: a ball's centre must lie in \
-                 [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses)",
+                 [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses), \
+                 or between a pocket's jaws short of its fall",
                 pos.x, pos.y
             ));
         }
