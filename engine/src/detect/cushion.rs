@@ -137,4 +137,45 @@ mod tests {
         assert!(nose_time(&toward(0.5), &cushion, 0.024, 1.0).is_some());
         assert!(nose_time(&toward(1.1), &cushion, 0.024, 1.0).is_none());
     }
+
+    /// Fuzz scene 420183 (seed 20261128): a red thrown from mid-table over the top-right
+    /// corner, coming down onto the top cushion's jaw 2.7 m and 0.62 s from where its flight
+    /// began. Its centre passes 2 mm from the jaw's edge (0.024 m inside the touching
+    /// distance), yet the contact was not found: the octic's root, expanded about the flight's
+    /// start, is off by ~1e-8 s, ~1e-7 m, and failed the 1e-9 m check, so the red landed on the
+    /// cushion's body and rolled off the end of the world.
+    #[test]
+    fn a_ball_coming_down_onto_a_jaw_from_far_away_meets_it() {
+        let p = crate::params::Params::default();
+        let table = crate::table::Table::snooker(&Default::default());
+        let jaw = table
+            .jaws
+            .iter()
+            .find(|j| j.name == "top-right/top jaw")
+            .unwrap();
+        let g = p.g;
+        let path = Path {
+            c: Vec3::new(
+                0.897_861_608_416_986,
+                0.304_817_902_073_025_06,
+                p.ball_radius,
+            ),
+            b: Vec3::new(
+                4.252_456_216_072_619,
+                -0.395_041_506_300_891_47,
+                3.105_753_587_054_569_4,
+            ),
+            a: Vec3::new(0.0, 0.0, -0.5 * g),
+        };
+        let edge = NoseEdge {
+            height: p.cushion_height,
+            radius: p.ball_radius,
+        };
+        let t = jaw_time_in_air(&path, jaw, edge, 0.64).expect("the jaw is met");
+        assert!((0.62..0.627).contains(&t), "{t}");
+        let at = path.at(t);
+        let d = (Vec3::new(at.x, at.y, 0.0) - jaw.centre).norm() - jaw.radius;
+        let touch = d.hypot(at.z - edge.height);
+        assert!((touch - edge.radius).abs() < 1e-9, "{touch}");
+    }
 }

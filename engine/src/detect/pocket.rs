@@ -17,7 +17,6 @@
 
 use super::cushion::NoseEdge;
 use super::roots::{entries, exits, first_entry};
-use crate::ball::Vec3;
 use crate::motion::Path;
 use crate::table::Pocket;
 use polycool::Quadratic;
@@ -65,10 +64,7 @@ pub fn far_edge_time(
 ) -> Option<(f64, bool)> {
     let mut rel = path.plan();
     rel.c -= pocket.centre;
-    // The pocket's axis, from the mouth into the pocket.
-    let axis = (pocket.centre - pocket.mouth)
-        .try_normalize(0.0)
-        .unwrap_or_else(Vec3::zeros);
+    let axis = pocket.axis();
     exits(&rel, pocket.radius, window)
         .find(|&t| rel.at(t).dot(&axis) >= 0.0)
         .map(|t| (t, edge.cleared_at(path.at(t).z)))
@@ -77,6 +73,7 @@ pub fn far_edge_time(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ball::Vec3;
     use crate::params::Params;
     use crate::table::{SnookerDims, Table};
 

@@ -52,10 +52,13 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
         } else {
             Default::default()
         };
-        roots.into_iter().filter(move |&t| {
-            let d = rel.at(t);
-            d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
-        })
+        roots
+            .into_iter()
+            .map(move |t| polished(|t| sphere_gap(rel, rho, t), t, window.min(MAX_WINDOW)))
+            .filter(move |&t| {
+                let d = rel.at(t);
+                d.dot(&rel.velocity(t)) < 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+            })
     });
     now.then_some(0.0).into_iter().chain(later)
 }
@@ -80,10 +83,26 @@ pub fn exits(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '
     } else {
         Default::default()
     };
-    roots.into_iter().filter(move |&t| {
-        let d = rel.at(t);
-        d.dot(&rel.velocity(t)) > 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
-    })
+    let end = window.min(MAX_WINDOW);
+    roots
+        .into_iter()
+        .map(move |t| polished(|t| sphere_gap(rel, rho, t), t, end))
+        .filter(move |&t| {
+            let d = rel.at(t);
+            d.dot(&rel.velocity(t)) > 0.0 && (d.norm() - rho).abs() <= VERIFY_TOL
+        })
+}
+
+/// The distance of `rel` from the origin less `rho` at time `t`, and its rate.
+fn sphere_gap(rel: &Path, rho: f64, t: f64) -> (f64, f64) {
+    let d = rel.at(t);
+    let n = d.norm();
+    let rate = if n > 0.0 {
+        d.dot(&rel.velocity(t)) / n
+    } else {
+        0.0
+    };
+    (n - rho, rate)
 }
 
 /// True when the path `rel` provably stays farther than `rho` from the origin over [0, `window`]
@@ -171,11 +190,63 @@ pub fn ring_entries(
     } else {
         Vec::new()
     };
+    let gap = move |t: f64| {
+        let (dist, d, h, p) = distance(t);
+        let v = plan.velocity(t);
+        let dd = if d > 0.0 {
+            (p.x * v.x + p.y * v.y) / d
+        } else {
+            0.0
+        };
+        (
+            dist - rho,
+            ((d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t)) / dist,
+        )
+    };
+    let end = window.min(MAX_WINDOW);
     now.then_some(0.0).into_iter().chain(
         roots
             .into_iter()
+            .map(move |t| polished(gap, t, end))
             .filter(move |&t| approaching(t) && (distance(t).0 - rho).abs() <= VERIFY_TOL),
     )
+}
+
+/// `t`, a root of an expanded polynomial, or, when the distance there misses its root by
+/// more than [`VERIFY_TOL`], the root of the distance itself found by Newton's method from
+/// `t` (within [0, `end`]). The polynomial's coefficients are taken about the start of the
+/// window, so a contact far from it (a ball thrown 2.7 m onto a jaw) loses digits to
+/// cancellation (a root ~1e-8 s, ~1e-7 m off); `gap` (distance less the contact distance, and
+/// its rate) is computed about the contact itself and keeps them. A root that already checks
+/// out is returned unchanged, bit for bit.
+fn polished(gap: impl Fn(f64) -> (f64, f64), t: f64, end: f64) -> f64 {
+    let (g0, _) = gap(t);
+    if g0.is_nan() || g0.abs() <= VERIFY_TOL {
+        return t;
+    }
+    let (mut best, mut best_gap) = (t, g0.abs());
+    let mut at = t;
+    for _ in 0..8 {
+        let (g, rate) = gap(at);
+        if !(rate.is_finite() && rate != 0.0) {
+            break;
+        }
+        let next = (at - g / rate).clamp(0.0, end);
+        // Newton from a nearby root moves by about the root's error; a long jump is another
+        // root's basin, not this one's.
+        if next.is_nan() || (next - t).abs() > 1e-6 * (1.0 + t) {
+            break;
+        }
+        at = next;
+        let g = gap(at).0.abs();
+        if g < best_gap {
+            (best, best_gap) = (at, g);
+        }
+        if g <= 0.1 * VERIFY_TOL {
+            break;
+        }
+    }
+    best
 }
 
 #[cfg(test)]

@@ -129,7 +129,8 @@ impl Table {
         if outside && !self.in_mouth(pos, contact) {
             return Some(format!(
                 "centre ({:.4}, {:.4}) m is off the cloth: a ball's centre must lie in \
-                 [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses)",
+                 [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses), \
+                 or between a pocket's jaws short of its fall",
                 pos.x, pos.y
             ));
         }
@@ -150,12 +151,17 @@ impl Table {
     /// line of the noses but short of the fall: on the bed of the pocket's mouth, clear of
     /// every nose and facing along its length (where a shot can leave a ball: WPBSA Section 3
     /// Rule 9, a ball on the edge of a pocket). The jaws and falls are checked apart.
+    ///
+    /// "Short of the fall" is [`Pocket::short_of_back`]: a centre past the fall's diameter
+    /// across the pocket's axis is behind the hole, over the pocket's back, where no ball can
+    /// rest (one on the cloth that gets there has crossed the fall and dropped; one in the air
+    /// has left the table, `detect::pocket`), so it is refused like any centre off the cloth.
     fn in_mouth(&self, pos: Vec3, contact: f64) -> bool {
         let tol = crate::detect::TOUCH_TOL;
         let near = self
             .pockets
             .iter()
-            .any(|p| (pos - p.mouth).norm() <= p.mouth_width);
+            .any(|p| (pos - p.mouth).norm() <= p.mouth_width && p.short_of_back(pos, 0.0));
         near && self.cushions.iter().all(|c| {
             let s = (pos - c.start).dot(&c.direction());
             let along = s >= 0.0 && s <= c.length();
@@ -179,7 +185,27 @@ impl Table {
         inside
             || self.pockets.iter().any(|p| {
                 let deep = (p.centre - p.mouth).norm() - p.radius;
-                (plan - p.mouth).norm() <= p.mouth_width + deep.max(0.0) + tol
+                let opening = (plan - p.mouth).norm() <= p.mouth_width + deep.max(0.0) + tol;
+                // Over the fall (a ball in the air), or in front of its far half.
+                opening
+                    && ((plan - p.centre).norm() <= p.radius + tol || p.short_of_back(plan, tol))
             })
+    }
+}
+
+impl Pocket {
+    /// The unit vector along the pocket's axis, from the mouth into the pocket (plan).
+    pub fn axis(&self) -> Vec3 {
+        (self.centre - self.mouth)
+            .try_normalize(0.0)
+            .unwrap_or_else(Vec3::zeros)
+    }
+
+    /// True when the plan point `pos` is not past the fall's diameter across the pocket's axis
+    /// (up to `tol` metres): in front of the far half of the fall, where the pocket's back
+    /// begins (the engine's model of the back: `detect::pocket`, README Table section).
+    pub fn short_of_back(&self, pos: Vec3, tol: f64) -> bool {
+        let plan = Vec3::new(pos.x, pos.y, 0.0);
+        (plan - self.centre).dot(&self.axis()) <= tol
     }
 }
