@@ -113,7 +113,7 @@ def main():
               "end error, median | sampled chance of the pot chosen | potted |")
         print("|---|---|---|---|---|---|")
         kinds = [
-            ("ran into a ball, as meant", lambda f: f["meant_balls_hit_after_first"] > 0),
+            ("meant to run into a ball", lambda f: f["meant_balls_hit_after_first"] > 0),
             ("ran into a ball, not meant", lambda f: f["meant_balls_hit_after_first"] == 0
              and f["cue_balls_hit_after_first"] > 0),
             ("ran into no ball", lambda f: f["meant_balls_hit_after_first"] == 0
