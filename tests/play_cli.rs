@@ -183,3 +183,91 @@ fn bad_input_exits_2_with_one_message_and_writes_nothing() {
     assert!(err.contains("frame.on"), "{err}");
     assert!(!log.exists());
 }
+
+#[test]
+fn the_recording_opens_at_the_end_with_the_cue_balls_path_of_every_stroke() {
+    use rerun::external::re_log_encoding::DecoderApp;
+    use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
+    use rerun::external::re_sdk_types::blueprint::components::PlayState;
+    use rerun::log::{Chunk, LogMsg};
+    use rerun::{LineStrips3D, Points3D, StoreKind};
+
+    let dir = temp_dir("play-record");
+    let rrd = dir.join("visit.rrd");
+    let o = play(
+        &dir,
+        &[
+            "--seed",
+            "5",
+            "--effort",
+            "300",
+            "--max-strokes",
+            "4",
+            "--record",
+            rrd.to_str().unwrap(),
+        ],
+        "log.jsonl",
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let log = lines(&dir.join("log.jsonl"));
+    let bytes = std::fs::read(&rrd).unwrap();
+    let strips_of = LineStrips3D::descriptor_strips().component;
+    let labels_of = Points3D::descriptor_labels().component;
+    let play_state_of = TimePanelBlueprint::descriptor_play_state().component;
+    let timeline = rerun::TimelineName::from(snooker::record::TIMELINE);
+    let (mut played, mut board, mut states) = (Vec::new(), Vec::new(), Vec::new());
+    for msg in DecoderApp::decode_lazy(bytes.as_slice()) {
+        let LogMsg::ArrowMsg(store, arrow) = msg.expect("a valid .rrd stream") else {
+            continue;
+        };
+        let chunk = Chunk::from_arrow_msg(&arrow).unwrap();
+        let path = chunk.entity_path().to_string();
+        let times: Vec<i64> = chunk
+            .timelines()
+            .get(&timeline)
+            .map_or_else(Vec::new, |t| t.times_raw().to_vec());
+        match (store.kind(), path.trim_start_matches('/')) {
+            (StoreKind::Recording, "plan/played") => {
+                for (t, v) in times
+                    .iter()
+                    .zip(chunk.iter_component::<rerun::components::LineStrip3D>(strips_of))
+                {
+                    played.push((*t, v.to_vec()));
+                }
+            }
+            (StoreKind::Recording, "frame/scoreboard") => board.extend(
+                times
+                    .iter()
+                    .zip(chunk.iter_component::<rerun::components::Text>(labels_of))
+                    .map(|(t, _)| *t),
+            ),
+            (StoreKind::Blueprint, p) if p.ends_with("time_panel") => {
+                for v in chunk.iter_component::<PlayState>(play_state_of) {
+                    states.extend(v.iter().copied());
+                }
+            }
+            _ => {}
+        }
+    }
+    // Opens following the timeline to its end.
+    assert_eq!(states, [PlayState::Following]);
+    // One row, at the end of the last stroke (the scoreboard's last row), one strip a stroke.
+    assert_eq!(played.len(), 1, "{played:?}");
+    let (t, strips) = &played[0];
+    assert_eq!(Some(t), board.iter().max());
+    assert_eq!(strips.len(), log.len());
+    assert!(log.len() >= 3, "{} strokes: too few to chain", log.len());
+    // Each stroke's path starts where the one before left the cue ball, unless in hand.
+    for k in 1..log.len() {
+        let in_hand = log[k]["frame"]
+            .as_str()
+            .unwrap()
+            .contains("ball_in_hand = true");
+        let (Some(start), Some(end)) = (strips[k].0.first(), strips[k - 1].0.last()) else {
+            panic!("stroke {k}: an empty path");
+        };
+        if !in_hand {
+            assert_eq!(start, end, "stroke {}", k + 1);
+        }
+    }
+}

@@ -138,41 +138,75 @@ fn ns(t: f64) -> i64 {
     (t * 1e9).round() as i64
 }
 
+/// The state ball `b` must show at each of `instants`: after the instant's events, or before
+/// them at the first of a pair.
+fn states_at(
+    shot: &Shot,
+    b: usize,
+    instants: &[(f64, Option<(usize, bool)>)],
+) -> Vec<snooker_engine::BallState> {
+    let tr = &shot.tracks[b];
+    instants
+        .iter()
+        .map(|&(t, side)| {
+            let first_event = shot
+                .events
+                .iter()
+                .find(|e| e.t == t && e.balls.contains(&b));
+            match (side, first_event) {
+                (Some((_, false)), Some(e)) => {
+                    let k = e.balls.iter().position(|&x| x == b).unwrap();
+                    e.before[k]
+                }
+                _ => tr.state_at(t, &shot.params),
+            }
+        })
+        .collect()
+}
+
+/// The instants a ball gets a row at, from their definition: the first and the last, and
+/// both ends of every run of instants with the same state (the viewer shows the latest row,
+/// so the state at any instant is the row at or before it).
+fn kept(states: &[snooker_engine::BallState]) -> Vec<usize> {
+    let n = states.len();
+    (0..n)
+        .filter(|&i| {
+            i == 0 || i + 1 == n || states[i] != states[i - 1] || states[i] != states[i + 1]
+        })
+        .collect()
+}
+
 /// Checks a decoded recording against the engine's shot: every ball sampled at exactly the
-/// expected instants, positions to f32 precision and speeds exactly (the pre-event state at the
-/// first of a pair, NaN once pocketed), unit orientations that do not jump at events and stay
-/// put for a ball that never moves; one log entry per event and a live marker at each.
+/// expected instants where its state changes (both ends of every run of one state),
+/// positions to f32 precision and speeds exactly (the pre-event state at the first of a
+/// pair, NaN once pocketed), unit orientations that do not jump at events and stay put for a
+/// ball that never moves; one log entry per event and a live marker at each.
 fn check_against_engine(d: &Decoded, shot: &Shot, rate: f64) {
-    let p = &shot.params;
     let instants = expected_instants(shot, rate);
     let translation = Transform3D::descriptor_translation().component;
     let quaternion = Transform3D::descriptor_quaternion().component;
     let scalars = rerun::Scalars::descriptor_scalars().component;
     let mut worst_pos = 0.0f64;
+    let mut rows_total = 0;
     for (b, tr) in shot.tracks.iter().enumerate() {
         let id = &tr.id;
+        let states = states_at(shot, b, &instants);
+        let keep = kept(&states);
+        rows_total += keep.len();
         let pos = rows::<rerun::components::Translation3D>(d, &format!("balls/{id}"), translation);
-        assert_eq!(pos.len(), instants.len(), "samples of {id}");
+        assert_eq!(pos.len(), keep.len(), "samples of {id}");
         let speed = rows::<rerun::components::Scalar>(d, &format!("plots/speed/{id}"), scalars);
-        assert_eq!(speed.len(), instants.len(), "speed samples of {id}");
+        assert_eq!(speed.len(), keep.len(), "speed samples of {id}");
         let quat =
             rows::<rerun::components::RotationQuat>(d, &format!("balls/{id}/body"), quaternion);
-        assert_eq!(quat.len(), instants.len(), "orientations of {id}");
+        assert_eq!(quat.len(), keep.len(), "orientations of {id}");
 
-        for (i, &(t, side)) in instants.iter().enumerate() {
-            assert_eq!(pos[i].0, ns(t), "time of sample {i} of {id}");
-            assert_eq!(speed[i].0, ns(t));
-            // The state the sample must show: after the instant's events, or before them.
-            let mut state = tr.state_at(t, p);
-            let first_event = shot
-                .events
-                .iter()
-                .find(|e| e.t == t && e.balls.contains(&b));
-            if let (Some((_, false)), Some(e)) = (side, first_event) {
-                let k = e.balls.iter().position(|&x| x == b).unwrap();
-                state = e.before[k];
-            }
-            let logged = pos[i].1[0].0.0;
+        for (row, &i) in keep.iter().enumerate() {
+            let (t, side) = instants[i];
+            let state = states[i];
+            assert_eq!(pos[row].0, ns(t), "time of sample {i} of {id}");
+            assert_eq!(speed[row].0, ns(t));
+            let logged = pos[row].1[0].0.0;
             for (a, e) in logged.iter().zip(state.pos.iter()) {
                 // f32 precision: the f64 position rounded once.
                 let err = (f64::from(*a) - e).abs();
@@ -183,7 +217,7 @@ fn check_against_engine(d: &Decoded, shot: &Shot, rate: f64) {
                     state.pos
                 );
             }
-            let v = speed[i].1[0].0.0;
+            let v = speed[row].1[0].0.0;
             if state.motion == Motion::Pocketed {
                 assert!(v.is_nan(), "{id} pocketed at {t} but speed {v}");
             } else {
@@ -193,13 +227,21 @@ fn check_against_engine(d: &Decoded, shot: &Shot, rate: f64) {
                     state.vel.norm()
                 );
             }
-            let q = quat[i].1[0].0.0;
+            let q = quat[row].1[0].0.0;
             let norm = q.iter().map(|c| f64::from(*c).powi(2)).sum::<f64>().sqrt();
             assert!((norm - 1.0).abs() < 1e-6, "{id}: |q| = {norm}");
-            if let Some((_, true)) = side {
+            if let (Some((_, true)), true) = (side, row > 0 && keep[row - 1] + 1 == i) {
                 // The orientation does not jump at an event.
-                assert_eq!(quat[i].1, quat[i - 1].1, "{id} at event time {t}");
+                assert_eq!(quat[row].1, quat[row - 1].1, "{id} at event time {t}");
             }
+        }
+        // Every instant left out shows the state of the row before it.
+        for (i, s) in states.iter().enumerate() {
+            let row = keep.partition_point(|&k| k <= i) - 1;
+            assert_eq!(
+                *s, states[keep[row]],
+                "{id}: instant {i} left out but changed"
+            );
         }
         // A ball that never moves never turns.
         if tr
@@ -208,11 +250,13 @@ fn check_against_engine(d: &Decoded, shot: &Shot, rate: f64) {
             .all(|s| s.state.motion == Motion::Stationary)
         {
             assert!(quat.iter().all(|(_, q)| q[0].0.0 == [0.0, 0.0, 0.0, 1.0]));
+            assert_eq!(keep.len(), 2, "{id} at rest: a row at each end");
         }
     }
     eprintln!(
-        "{} instants per ball, worst position error {worst_pos:.2e} m",
-        instants.len()
+        "{} instants per ball, {rows_total} rows for {} balls, worst position error {worst_pos:.2e} m",
+        instants.len(),
+        shot.tracks.len()
     );
 
     // Events: one log entry each at its exact time, in order, naming its kind.
@@ -310,7 +354,17 @@ fn a_potted_ball_leaves_the_view_and_the_plots() {
         .find(|e| e.kind.name() == "ball_pocket")
         .expect("the scene pots the cue ball");
     let rate = 120.0;
-    let d = decode(&record::encode(&scene, &shot, &RecordOptions { rate }).unwrap());
+    let d = decode(
+        &record::encode(
+            &scene,
+            &shot,
+            &RecordOptions {
+                rate,
+                ..Default::default()
+            },
+        )
+        .unwrap(),
+    );
     check_against_engine(&d, &shot, rate);
 
     // The sphere: one row showing it at the start, one hiding it at the pot.
@@ -365,7 +419,15 @@ pos = [1.5, 0.55]
 #[test]
 fn table_geometry_is_static_and_complete() {
     let (scene, shot) = break_off();
-    let bytes = record::encode(&scene, &shot, &RecordOptions { rate: 30.0 }).unwrap();
+    let bytes = record::encode(
+        &scene,
+        &shot,
+        &RecordOptions {
+            rate: 30.0,
+            ..Default::default()
+        },
+    )
+    .unwrap();
     let d = decode(&bytes);
     let table = &scene.setup.table;
     for entity in [
@@ -400,21 +462,44 @@ fn table_geometry_is_static_and_complete() {
 fn open_table_gets_a_cloth_patch_and_a_slower_rate_fewer_samples() {
     let (scene, shot) = cue_and_red("open", [0.0, 0.0], [1.5, 0.0], [0.8, 0.02]);
     for rate in [50.0, 333.0] {
-        let bytes = record::encode(&scene, &shot, &RecordOptions { rate }).unwrap();
+        let bytes = record::encode(
+            &scene,
+            &shot,
+            &RecordOptions {
+                rate,
+                ..Default::default()
+            },
+        )
+        .unwrap();
         let d = decode(&bytes);
         check_against_engine(&d, &shot, rate);
         assert!(d.chunks.contains_key("table/cloth"));
         assert!(!d.chunks.contains_key("table/pockets"));
         let translation = Transform3D::descriptor_translation().component;
         let pos = rows::<rerun::components::Translation3D>(&d, "balls/red", translation);
-        assert_eq!(pos.len(), expected_instants(&shot, rate).len());
+        let instants = expected_instants(&shot, rate);
+        assert_eq!(pos.len(), kept(&states_at(&shot, 1, &instants)).len());
     }
     assert!(matches!(
-        record::encode(&scene, &shot, &RecordOptions { rate: 0.0 }),
+        record::encode(
+            &scene,
+            &shot,
+            &RecordOptions {
+                rate: 0.0,
+                ..Default::default()
+            }
+        ),
         Err(record::RecordError::Rate(_))
     ));
     assert!(matches!(
-        record::encode(&scene, &shot, &RecordOptions { rate: f64::NAN }),
+        record::encode(
+            &scene,
+            &shot,
+            &RecordOptions {
+                rate: f64::NAN,
+                ..Default::default()
+            }
+        ),
         Err(record::RecordError::Rate(_))
     ));
 }

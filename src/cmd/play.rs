@@ -52,7 +52,8 @@ pub struct Args {
     #[arg(long, value_name = "OUT.jsonl")]
     pub log: Option<PathBuf>,
     /// Write a Rerun recording of the strokes on one timeline, with the planned target and
-    /// the path intended beside the one played.
+    /// the path intended beside the one played; it opens at the end, with every stroke's
+    /// cue-ball path.
     #[arg(long, value_name = "OUT.rrd")]
     pub record: Option<PathBuf>,
     /// Write a summary as JSON to this file, or to standard output with `-`.
@@ -188,51 +189,101 @@ fn recording(game: &Game) -> Result<Vec<u8>, record::RecordError> {
         })
         .collect();
     let rgb = |c: [u8; 3]| Color::from_rgb(c[0], c[1], c[2]);
-    record::frame::encode_strokes_with(
-        &strokes,
-        &record::RecordOptions::default(),
-        |rec, starts| {
-            for (s, &t0) in game.strokes.iter().zip(starts) {
-                let r = s.frame.params().ball_radius;
-                rec.set_duration_secs(record::TIMELINE, t0);
-                let to = s.decision.plan.cue_to;
-                rec.log(
-                    "plan/target",
-                    &Points3D::new([[to[0] as f32, to[1] as f32, r as f32]])
-                        .with_colors([rgb(TARGET_COLOR)])
-                        .with_radii([rerun::Radius::new_scene_units(0.4 * r as f32)]),
-                )
-                .map_err(record::rerun_err)?;
-                // The path the cue ball would have taken had the strike been played as meant.
-                let path: Vec<[f32; 3]> = match s
-                    .frame
-                    .setup(&s.decision.strike)
-                    .ok()
-                    .and_then(|setup| snooker_engine::simulate(&setup, s.frame.options()).ok())
-                {
-                    Some(shot) => {
-                        let cue = s.frame.cue_index().unwrap_or(0);
-                        (0..=200)
-                            .map(|k| {
-                                let t = shot.duration * k as f64 / 200.0;
-                                let p = shot.tracks[cue].state_at(t, &shot.params).pos;
-                                [p.x as f32, p.y as f32, p.z as f32]
-                            })
-                            .collect()
-                    }
-                    None => Vec::new(),
-                };
-                rec.log(
-                    "plan/intended",
-                    &LineStrips3D::new([path])
-                        .with_colors([rgb(INTENDED_COLOR)])
-                        .with_radii([rerun::Radius::new_ui_points(1.0)]),
-                )
-                .map_err(record::rerun_err)?;
-            }
-            Ok(())
-        },
-    )
+    // A break is looked at from its end: the table it left, the score, and the cue ball's
+    // way through every stroke.
+    let opts = record::RecordOptions {
+        open_at: record::OpenAt::End,
+        ..Default::default()
+    };
+    record::frame::encode_strokes_with(&strokes, &opts, |rec, starts| {
+        for (s, &t0) in game.strokes.iter().zip(starts) {
+            let r = s.frame.params().ball_radius;
+            rec.set_duration_secs(record::TIMELINE, t0);
+            let to = s.decision.plan.cue_to;
+            rec.log(
+                "plan/target",
+                &Points3D::new([[to[0] as f32, to[1] as f32, r as f32]])
+                    .with_colors([rgb(TARGET_COLOR)])
+                    .with_radii([rerun::Radius::new_scene_units(0.4 * r as f32)]),
+            )
+            .map_err(record::rerun_err)?;
+            // The path the cue ball would have taken had the strike been played as meant.
+            let path: Vec<[f32; 3]> = match s
+                .frame
+                .setup(&s.decision.strike)
+                .ok()
+                .and_then(|setup| snooker_engine::simulate(&setup, s.frame.options()).ok())
+            {
+                Some(shot) => {
+                    let cue = s.frame.cue_index().unwrap_or(0);
+                    (0..=200)
+                        .map(|k| {
+                            let t = shot.duration * k as f64 / 200.0;
+                            let p = shot.tracks[cue].state_at(t, &shot.params).pos;
+                            [p.x as f32, p.y as f32, p.z as f32]
+                        })
+                        .collect()
+                }
+                None => Vec::new(),
+            };
+            rec.log(
+                "plan/intended",
+                &LineStrips3D::new([path])
+                    .with_colors([rgb(INTENDED_COLOR)])
+                    .with_radii([rerun::Radius::new_ui_points(1.0)]),
+            )
+            .map_err(record::rerun_err)?;
+        }
+        // The cue ball's paths as played, one strip per stroke, shown once the last stroke
+        // has ended (points where its way turns, and every 5 cm between).
+        if let Some((last, &t_last)) = game.strokes.last().zip(starts.last()) {
+            let strips: Vec<Vec<[f32; 3]>> = game.strokes.iter().map(cue_way).collect();
+            rec.set_duration_secs(record::TIMELINE, t_last + last.shot.duration);
+            rec.log(
+                "plan/played",
+                &LineStrips3D::new(strips)
+                    .with_colors([rgb(PLAYED_COLOR)])
+                    .with_radii([rerun::Radius::new_ui_points(1.5)]),
+            )
+            .map_err(record::rerun_err)?;
+        }
+        Ok(())
+    })
+}
+
+/// Colour of the cue ball's paths as played, in a recording.
+const PLAYED_COLOR: [u8; 3] = [240, 240, 240];
+
+/// The cue ball's path in stroke `s`: its position at every event it took part in (where its
+/// way turns or curves begin and end) and every 5 cm of its way between (a curve's shape).
+fn cue_way(s: &snooker_player::StrokeRecord) -> Vec<[f32; 3]> {
+    let Some(cue) = s.frame.cue_index() else {
+        return Vec::new();
+    };
+    let shot = &s.shot;
+    let track = &shot.tracks[cue];
+    let mut times: Vec<f64> = vec![0.0, shot.duration];
+    times.extend(
+        shot.events
+            .iter()
+            .filter(|e| e.balls.contains(&cue))
+            .map(|e| e.t),
+    );
+    // About 5 cm apart at the cue speed's start.
+    let step = 0.05 / s.executed.speed.max(0.1);
+    let mut t = step;
+    while t < shot.duration {
+        times.push(t);
+        t += step;
+    }
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    times
+        .iter()
+        .map(|&t| track.state_at(t, &shot.params))
+        .filter(|st| st.motion.in_play())
+        .map(|st| [st.pos.x as f32, st.pos.y as f32, st.pos.z as f32])
+        .collect()
 }
 
 /// Runs the command.

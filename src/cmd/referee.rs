@@ -134,6 +134,7 @@ pub fn run(args: Args) -> ExitCode {
     }
     let opts = record::RecordOptions {
         rate: args.record_rate,
+        ..Default::default()
     };
     if args.record.is_some()
         && let Err(e) = opts.validate()

@@ -49,6 +49,7 @@ pub fn run(args: Args) -> ExitCode {
             p,
             record::RecordOptions {
                 rate: args.record_rate,
+                ..Default::default()
             },
         )
     });

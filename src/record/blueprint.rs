@@ -112,9 +112,13 @@ fn container(
     bp.log(format!("container/{id}"), &c).map_err(rerun_err)
 }
 
-/// Sends the layout to `rec`, with the 3D eye framing the plan rectangle `extent`, and makes it
-/// the recording's default.
-pub fn send(rec: &RecordingStream, extent: Option<(Vec3, Vec3)>) -> Result<(), RecordError> {
+/// Sends the layout to `rec`, with the 3D eye framing the plan rectangle `extent` and the
+/// timeline opening at `open_at`, and makes it the recording's default.
+pub fn send(
+    rec: &RecordingStream,
+    extent: Option<(Vec3, Vec3)>,
+    open_at: super::OpenAt,
+) -> Result<(), RecordError> {
     let (bp, storage) = RecordingStreamBuilder::new("snooker")
         .enabled(true)
         .blueprint()
@@ -248,13 +252,17 @@ pub fn send(rec: &RecordingStream, extent: Option<(Vec3, Vec3)>) -> Result<(), R
             .with_auto_views(false),
     )
     .map_err(rerun_err)?;
-    // Open paused at the start of the shot, the time series showing it all; the side panels
-    // folded away so that the views get the room.
+    // Open paused at the start of the shot (or following it to its end: the latest data), the
+    // time series showing it all; the side panels folded away so that the views get the room.
+    let play_state = match open_at {
+        super::OpenAt::Start => PlayState::Paused,
+        super::OpenAt::End => PlayState::Following,
+    };
     bp.log(
         "time_panel",
         &TimePanelBlueprint::new()
             .with_timeline(TIMELINE)
-            .with_play_state(PlayState::Paused)
+            .with_play_state(play_state)
             .with_state(PanelState::Collapsed),
     )
     .map_err(rerun_err)?;

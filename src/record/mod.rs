@@ -51,11 +51,26 @@ const TRAIL_ALPHA: [u8; 4] = [230, 160, 90, 40];
 pub struct RecordOptions {
     /// Sample rate of the fixed grid, Hz.
     pub rate: f64,
+    /// Where on the timeline the viewer opens.
+    pub open_at: OpenAt,
+}
+
+/// Where on the timeline the viewer opens a recording.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum OpenAt {
+    /// Paused at the start (a shot, to be played).
+    #[default]
+    Start,
+    /// At the end (a break or a frame: the table and the score it ended with).
+    End,
 }
 
 impl Default for RecordOptions {
     fn default() -> Self {
-        RecordOptions { rate: DEFAULT_RATE }
+        RecordOptions {
+            rate: DEFAULT_RATE,
+            open_at: OpenAt::Start,
+        }
     }
 }
 
@@ -186,15 +201,13 @@ pub fn encode_with(
         .memory()
         .map_err(rerun_err)?;
     let extent = table::extent(&scene.setup.table, &states);
-    blueprint::send(&rec, extent)?;
+    blueprint::send(&rec, extent, opts.open_at)?;
     rec.log_static("/", &ViewCoordinates::RIGHT_HAND_Z_UP())
         .map_err(rerun_err)?;
     table::log(&rec, &scene.setup.table, &shot.params, extent)?;
-    let times = TimeColumn::new_duration_secs(TIMELINE, schedule.instants.iter().map(|i| i.t));
     for (b, track) in shot.tracks.iter().enumerate() {
         let ball = Ball {
             rec: &rec,
-            times: &times,
             schedule: &schedule,
             track,
             states: &states[b],
@@ -241,7 +254,6 @@ fn log_overlay(rec: &RecordingStream, o: &Overlay) -> Result<(), RecordError> {
 /// One ball's recording.
 struct Ball<'a> {
     rec: &'a RecordingStream,
-    times: &'a TimeColumn,
     schedule: &'a Schedule,
     track: &'a Track,
     states: &'a [BallState],
@@ -275,17 +287,19 @@ impl Ball<'_> {
         let r = self.params.ball_radius;
         let colour = rgb(crate::palette::ball(self.track.kind));
         let in_play: Vec<bool> = self.states.iter().map(|s| s.motion.in_play()).collect();
-        let all = || self.times.clone();
+        let rows = self.rows();
+        let all = || self.times_at(&rows);
 
-        // Position (the ball's frame) and orientation (its body frame) at every instant.
+        // Position (the ball's frame) and orientation (its body frame) wherever the state
+        // changes.
         self.send(
             path(&["balls"], id),
             all(),
             Transform3D::update_fields()
-                .with_many_translation(self.states.iter().map(|s| f32x3(s.pos)))
+                .with_many_translation(rows.iter().map(|&i| f32x3(self.states[i].pos)))
                 .columns_of_unit_batches(),
         )?;
-        let times: Vec<f64> = self.schedule.instants.iter().map(|i| i.t).collect();
+        let times: Vec<f64> = rows.iter().map(|&i| self.schedule.instants[i].t).collect();
         let q = orientation::orientations(self.track, self.params, &times);
         self.send(
             path(&["balls", id], "body"),
@@ -357,18 +371,35 @@ impl Ball<'_> {
                 .columns(ring_counts),
         )?;
 
-        self.log_arrows(id, r)?;
+        self.log_arrows(id, r, &rows)?;
         self.log_trail(id)?;
-        self.log_plots(id, r)?;
+        self.log_plots(id, r, &rows)?;
         self.log_motion(id)
+    }
+
+    /// The instants worth a row: the first and the last, and both ends of every run of
+    /// instants with the same state (a ball at rest, pocketed or waiting off the table for
+    /// its stroke has one state for seconds; the viewer shows the latest row, and a plot's
+    /// line between the ends of a run is the run itself). A whole visit's recording was
+    /// mostly such repeated rows.
+    fn rows(&self) -> Vec<usize> {
+        let s = self.states;
+        let n = s.len();
+        (0..n)
+            .filter(|&i| i == 0 || i + 1 == n || s[i] != s[i - 1] || s[i] != s[i + 1])
+            .collect()
     }
 
     /// The vectors `f` gives at the instants the ball is in play and `f` is not zero (with the
     /// motion phase there), and per instant how many of them there are (0 or 1).
-    fn shown(&self, f: impl Fn(&BallState) -> Vec3) -> (Vec<(Vec3, Motion)>, Vec<usize>) {
+    fn shown(
+        &self,
+        rows: &[usize],
+        f: impl Fn(&BallState) -> Vec3,
+    ) -> (Vec<(Vec3, Motion)>, Vec<usize>) {
         let mut shown = Vec::new();
-        let mut counts = Vec::with_capacity(self.states.len());
-        for s in self.states {
+        let mut counts = Vec::with_capacity(rows.len());
+        for s in rows.iter().map(|&i| &self.states[i]) {
             let v = f(s);
             let show = s.motion.in_play() && v != Vec3::zeros();
             if show {
@@ -381,17 +412,17 @@ impl Ball<'_> {
 
     /// Velocity (coloured by motion phase) and spin arrows from the centre; none for a ball at
     /// rest or pocketed.
-    fn log_arrows(&self, id: &str, r: f64) -> Result<(), RecordError> {
-        let (vel, counts) = self.shown(|s| s.vel);
+    fn log_arrows(&self, id: &str, r: f64, rows: &[usize]) -> Result<(), RecordError> {
+        let (vel, counts) = self.shown(rows, |s| s.vel);
         self.send(
             path(&["balls", id], "velocity"),
-            self.times.clone(),
+            self.times_at(rows),
             Arrows3D::update_fields()
                 .with_vectors(vel.iter().map(|&(v, _)| f32x3(v * VELOCITY_SCALE)))
                 .with_colors(vel.iter().map(|&(_, m)| rgb(motion_color(m))))
                 .columns(counts),
         )?;
-        let (spin, counts) = self.shown(|s| s.spin);
+        let (spin, counts) = self.shown(rows, |s| s.spin);
         self.rec
             .log_static(
                 path(&["balls", id], "spin"),
@@ -400,7 +431,7 @@ impl Ball<'_> {
             .map_err(rerun_err)?;
         self.send(
             path(&["balls", id], "spin"),
-            self.times.clone(),
+            self.times_at(rows),
             Arrows3D::update_fields()
                 .with_vectors(spin.iter().map(|&(w, _)| f32x3(w * (r * SPIN_SCALE))))
                 .columns(counts),
@@ -517,10 +548,10 @@ impl Ball<'_> {
 
     /// Time series: speed |v|, slip speed at the cloth |u|, spin components. Gaps (NaN) after
     /// the ball is pocketed, and for the slip while it is airborne.
-    fn log_plots(&self, id: &str, r: f64) -> Result<(), RecordError> {
+    fn log_plots(&self, id: &str, r: f64, rows: &[usize]) -> Result<(), RecordError> {
         let colour = rgb(crate::palette::ball(self.track.kind));
-        let speed: Vec<f64> = self
-            .states
+        let states: Vec<&BallState> = rows.iter().map(|&i| &self.states[i]).collect();
+        let speed: Vec<f64> = states
             .iter()
             .map(|s| {
                 if s.motion.in_play() {
@@ -530,8 +561,7 @@ impl Ball<'_> {
                 }
             })
             .collect();
-        let slip: Vec<f64> = self
-            .states
+        let slip: Vec<f64> = states
             .iter()
             .map(|s| match s.motion {
                 Motion::Pocketed | Motion::OffTable | Motion::Airborne => f64::NAN,
@@ -550,7 +580,7 @@ impl Ball<'_> {
                 .map_err(rerun_err)?;
             self.send(
                 entity,
-                self.times.clone(),
+                self.times_at(rows),
                 Scalars::update_fields()
                     .with_scalars(values)
                     .columns_of_unit_batches(),
@@ -571,16 +601,16 @@ impl Ball<'_> {
             .map_err(rerun_err)?;
         self.send(
             entity,
-            self.times.clone(),
+            self.times_at(rows),
             Scalars::update_fields()
-                .with_scalars(self.states.iter().flat_map(|s| {
+                .with_scalars(states.iter().flat_map(|s| {
                     if s.motion.in_play() {
                         [s.spin.x, s.spin.y, s.spin.z]
                     } else {
                         [f64::NAN; 3]
                     }
                 }))
-                .columns(std::iter::repeat_n(3, self.states.len())),
+                .columns(std::iter::repeat_n(3, states.len())),
         )
     }
 
