@@ -134,16 +134,18 @@ pub fn ring_entries(
         let d = Vec3::new(p.x, p.y, 0.0).norm();
         ((d - ring).hypot(h), d, h, p)
     };
-    let approaching = move |t: f64| {
-        let (_, d, h, p) = distance(t);
+    // The distance and dist times its rate of change: (d - ring) d' + h h'.
+    let rate = move |t: f64| {
+        let (dist, d, h, p) = distance(t);
         let v = plan.velocity(t);
         let dd = if d > 0.0 {
             (p.x * v.x + p.y * v.y) / d
         } else {
             0.0
         };
-        (d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t) < 0.0
+        (dist, (d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t))
     };
+    let approaching = move |t: f64| rate(t).1 < 0.0;
     let now = distance(0.0).0 <= rho + TOUCH_TOL && approaching(0.0);
     let rho = rho - SKIN;
     // Within rho of the ring, the plan distance from its axis is at most ring + rho.
@@ -191,17 +193,8 @@ pub fn ring_entries(
         Vec::new()
     };
     let gap = move |t: f64| {
-        let (dist, d, h, p) = distance(t);
-        let v = plan.velocity(t);
-        let dd = if d > 0.0 {
-            (p.x * v.x + p.y * v.y) / d
-        } else {
-            0.0
-        };
-        (
-            dist - rho,
-            ((d - ring) * dd + h * (dz[1] + 2.0 * dz[2] * t)) / dist,
-        )
+        let (dist, r) = rate(t);
+        (dist - rho, r / dist)
     };
     let end = window.min(MAX_WINDOW);
     now.then_some(0.0).into_iter().chain(
