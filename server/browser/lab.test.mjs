@@ -7,7 +7,8 @@
 // says it; plans a shot (picked on the table), cancels a plan, plays the planned shot; plays a
 // stroke of a frame with the referee; lets the player play a visit (its reasoning checked against
 // the server's JSON, the scores against the referee's), then starts a frame against the player
-// and cancels its visit while it thinks. Fails on any
+// and cancels its visit while it thinks, and sees its visit start by itself after a stroke
+// played by hand gives it the table. Fails on any
 // console error, page error or request off the local server.
 //
 //   SNOOKER_BIN=target/ci/snooker node server/browser/lab.test.mjs [--screenshots DIR]
@@ -357,6 +358,34 @@ try {
   const later = await page.evaluate(async (id) => { await new Promise((r) => setTimeout(r, 500)); return (await fetch(`/api/jobs/${id}`)).json(); }, jobId);
   assert.equal(later.shots, job.shots, "no shot simulated after the cancel");
   log(await page.textContent("#status"));
+
+  // Still a frame against the player, now taking the other side: the person to play gives the
+  // table away by hand (the cue ball nudged away from every ball: a foul, no ball hit), and the
+  // player's visit starts by itself (a low effort, so that it stays quick).
+  await page.fill("#player-effort", "400");
+  const person = await page.evaluate(() => window.lab.position.frame.to_play);
+  await page.selectOption("#player-side", String(1 - person));
+  const away = await page.evaluate(() => {
+    const cue = window.lab.ball("cue").pos;
+    const others = window.lab.position.scene.balls.filter((b) => b.id !== "cue");
+    others.sort((a, b) => Math.hypot(a.pos[0] - cue[0], a.pos[1] - cue[1]) - Math.hypot(b.pos[0] - cue[0], b.pos[1] - cue[1]));
+    const n = others[0].pos;
+    return (Math.atan2(cue[1] - n[1], cue[0] - n[0]) * 180) / Math.PI;
+  });
+  await page.fill("#aim", away.toFixed(1));
+  await page.dispatchEvent("#aim", "change");
+  await page.$eval("#speed", (s) => { s.value = "0.1"; s.dispatchEvent(new Event("input")); });
+  const before = await page.$$eval("#strokes li", (l) => l.length);
+  await page.click("#play-stroke");
+  await page.waitForFunction((n) => document.querySelectorAll("#strokes li").length > n, before, { timeout: 60000 });
+  const handLine = await page.$eval("#strokes li:last-child", (x) => x.textContent);
+  assert.ok(/Foul/.test(handLine) && !/the player/.test(handLine), `the hand stroke: ${handLine}`);
+  await page.waitForFunction((n) => [...document.querySelectorAll("#strokes li")].slice(n + 1).some((x) => /\(the player\)/.test(x.textContent)), before, { timeout: 120000 });
+  await page.waitForFunction(() => /visit over|visit cancelled|visit failed/.test(document.getElementById("status").textContent), null, { timeout: 300000 });
+  await idle();
+  const after = await page.textContent("#status");
+  assert.ok(/visit over/.test(after), after);
+  log("after a hand stroke that gave the table away:", after);
 
   assert.deepEqual(problems, [], "no console error, no page error, no request off the local server");
   log("all checks passed");
