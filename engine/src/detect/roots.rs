@@ -29,7 +29,7 @@ pub fn first_entry(rel: &Path, rho: f64, window: f64) -> Option<f64> {
 /// gives 0 first; the later entries are searched only if they are asked for (a caller may
 /// refuse the first, as a nose edge's does where the touch is beyond the nose's end).
 pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
-    let (a, b, c) = (rel.a, rel.b, rel.c);
+    let (b, c) = (rel.b, rel.c);
     let dist0 = c.norm();
     let now = dist0 <= rho + TOUCH_TOL && c.dot(&b) < 0.0;
     let rho = rho - SKIN;
@@ -39,16 +39,9 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
             || dist0 - rho > rel.reach(window)
             || never_within(rel, rho, window.min(MAX_WINDOW)));
         let roots = if searched {
-            let quartic = Poly::new([
-                c.dot(&c) - rho * rho,
-                2.0 * b.dot(&c),
-                b.dot(&b) + 2.0 * a.dot(&c),
-                2.0 * a.dot(&b),
-                a.dot(&a),
-            ]);
             // A law that never ends (no friction) is searched over a bounded, still
             // astronomical, span.
-            quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+            sphere_quartic(rel, rho).roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
         } else {
             Default::default()
         };
@@ -63,23 +56,29 @@ pub fn entries(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> +
     now.then_some(0.0).into_iter().chain(later)
 }
 
+/// |rel(t)|^2 - rho^2 as a quartic in t: zero where the path crosses the sphere of radius
+/// `rho` around the origin.
+fn sphere_quartic(rel: &Path, rho: f64) -> Poly<5> {
+    let (a, b, c) = (rel.a, rel.b, rel.c);
+    Poly::new([
+        c.dot(&c) - rho * rho,
+        2.0 * b.dot(&c),
+        b.dot(&b) + 2.0 * a.dot(&c),
+        2.0 * a.dot(&b),
+        a.dot(&a),
+    ])
+}
+
 /// Every time in [0, window], in order, at which the relative path `rel` leaves the sphere of
 /// radius `rho` around the origin (moving away from it): the crossings [`entries`] leaves out.
 pub fn exits(rel: &Path, rho: f64, window: f64) -> impl Iterator<Item = f64> + '_ {
-    let (a, b, c) = (rel.a, rel.b, rel.c);
+    let c = rel.c;
     let searched = !(window.is_nan()
         || window <= 0.0
         || rho - c.norm() > rel.reach(window)
         || never_within(rel, rho, window.min(MAX_WINDOW)));
     let roots = if searched {
-        let quartic = Poly::new([
-            c.dot(&c) - rho * rho,
-            2.0 * b.dot(&c),
-            b.dot(&b) + 2.0 * a.dot(&c),
-            2.0 * a.dot(&b),
-            a.dot(&a),
-        ]);
-        quartic.roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
+        sphere_quartic(rel, rho).roots_between(0.0, window.min(MAX_WINDOW), ROOT_TIME_TOL)
     } else {
         Default::default()
     };
