@@ -24,7 +24,7 @@ use crate::outcome::outcome;
 use crate::value::Valuer;
 use rayon::prelude::*;
 use snooker_engine::{BallKind, Cue, EventKind, Shot, Vec3};
-use snooker_planner::{Objective, Problem, Scored, Stroke, Trial, explore, rng_for};
+use snooker_planner::{Objective, Problem, Scored, Stroke, Trial, explore, refine, rng_for};
 use snooker_rules::{Frame, Next};
 
 /// Share of the effort spent on the deterministic search (the rest on noise samples).
@@ -45,6 +45,13 @@ const COARSE_SHARE: f64 = 0.35;
 const FINE_LINES: usize = 6;
 /// Most strokes of one line taken to the noise samples.
 const PER_LINE: usize = 2;
+/// The best candidates of the grids refined by Nelder–Mead before the noise samples, the
+/// iterations each and the first simplex's size (share of each of the stroke's ranges: speed
+/// geometric, side, height). Measured: over open tables 1-200 at the standard noise the mean
+/// break rose from 20.0 to 25.1 (paired, +5.2 ± 4.4 at 95 %; docs/playing.md).
+const REFINED: usize = 6;
+const REFINE_ITERS: u64 = 20;
+const REFINE_SIZE: f64 = 0.08;
 /// Fewest and most candidates sampled under noise.
 const MIN_CANDIDATES: usize = 4;
 const MAX_CANDIDATES: usize = 20;
@@ -356,8 +363,40 @@ impl Player {
             found.extend(run(batch, &fine));
             report();
         }
-        let mut used = shots(&targets);
         found.sort_by(|a, b| b.2.total_cmp(&a.2));
+        // Refine: the grids' speeds are 40 % apart, the cue ball's run goes as the speed
+        // squared, so the best strokes are taken on between the grid's points.
+        let top = REFINED.min(found.len());
+        let refined: Vec<(Scored, f64)> = found[..top]
+            .par_iter()
+            .map(|(li, s, _)| {
+                let lc: &LineCandidate = &lines[*li];
+                let t = &targets[lc.target];
+                let objective = PotObjective {
+                    frame: &t.frame,
+                    valuer,
+                    pot: &t.frame.balls()[t.ball].id,
+                };
+                let r = refine(
+                    &t.problem,
+                    &lc.line,
+                    s,
+                    &objective,
+                    REFINE_ITERS,
+                    REFINE_SIZE,
+                );
+                let c = lc.chance;
+                let ev = c * r.value - (1.0 - c) * miss_cost;
+                (r, ev)
+            })
+            .collect();
+        for (k, (r, ev)) in refined.into_iter().enumerate() {
+            found[k].1 = r;
+            found[k].2 = ev;
+        }
+        report();
+        found.sort_by(|a, b| b.2.total_cmp(&a.2));
+        let mut used = shots(&targets);
         if std::env::var("PLAYER_DEBUG").is_ok() {
             for lc in &lines {
                 let t = &targets[lc.target];
