@@ -1,5 +1,9 @@
-//! The pot probability of a plain stroke at each cue speed under the standard noise, for a
-//! few cuts: does the noise make soft pots harder (throw varies with speed)?
+//! The pot probability of a plain stroke (centre ball, aimed by the planner) at each cue speed
+//! under the standard noise, for a red 0.9 m from a corner pocket at a few cuts and distances:
+//! the speed's error is absolute (0.075 m/s), so a soft pot that barely reaches the pocket
+//! fails (docs/playing.md, "Why the cue ball runs far: pace").
+//!
+//! `cargo run --release -p snooker-player --example speed_chance -- [SAMPLES]` (default 400).
 use snooker_engine::{
     Ball, BallKind, BallState, Models, Params, Setup, SimOptions, SnookerDims, Table, Vec3,
 };
@@ -19,6 +23,7 @@ fn main() {
         .clone();
     let noise = Noise::STANDARD;
     let mouth = pocket.mouth;
+    // 0.9 m out from the mouth along the pocket's diagonal.
     let red = Vec3::new(mouth.x - 0.9 * 0.707, mouth.y - 0.9 * 0.707, 0.0);
     let u = (mouth - red).normalize();
     let u = Vec3::new(u.x, u.y, 0.0);
