@@ -14,9 +14,10 @@
 //! strokes (lines in order of their first estimate, a grid of speeds and heights on each,
 //! the heading solved by the planner) until [`DETERMINISTIC_SHARE`] of it is spent, the best
 //! few strokes then refined between the grid's points (Nelder–Mead, the planner's `refine`);
-//! the noise samples of the best candidates with the rest. Everything is simulated in parallel and
-//! reduced in a fixed order; every random draw is seeded from (seed, stroke, placement,
-//! candidate, sample), so the decision is the same on any machine and thread count.
+//! the noise samples of the best candidates with the rest. Everything is simulated in
+//! parallel and reduced in a fixed order; every random draw is seeded from (seed, stroke,
+//! placement, candidate, sample), so the decision is the same on any machine and thread
+//! count.
 
 use crate::agent::{Agent, ChooseError, Context};
 use crate::candidates::{self, ELEVATION, LineCandidate, Target};
