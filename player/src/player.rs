@@ -25,7 +25,7 @@ use crate::decision::{Considered, Decision, PlanKind};
 use crate::outcome::outcome;
 use crate::value::Valuer;
 use rayon::prelude::*;
-use snooker_engine::{BallKind, Cue, EventKind, Shot, Vec3};
+use snooker_engine::{Cue, EventKind, Shot, Vec3};
 use snooker_planner::{Objective, Problem, Scored, Stroke, Trial, explore, refine, rng_for};
 use snooker_rules::{Frame, Next};
 
@@ -246,12 +246,7 @@ fn sample(
 /// they leave, at least [`PLACEMENT_GAP`] apart.
 fn placements(frame: &Frame, valuer: &Valuer) -> Vec<[f64; 2]> {
     let r = frame.params().ball_radius;
-    let others: Vec<Vec3> = frame
-        .balls()
-        .iter()
-        .filter(|b| b.kind != BallKind::Cue)
-        .map(|b| b.state.pos)
-        .collect();
+    let others = crate::value::object_positions(frame);
     let mut scored: Vec<(f64, [f64; 2])> = frame
         .the_d()
         .grid(crate::value::IN_HAND_STEP)

@@ -135,12 +135,7 @@ impl Valuer {
     /// of every ball) and its value.
     pub fn best_in_hand(&self, frame: &Frame) -> (f64, Option<[f64; 2]>) {
         let r = frame.params().ball_radius;
-        let others: Vec<Vec3> = frame
-            .balls()
-            .iter()
-            .filter(|b| b.kind != BallKind::Cue)
-            .map(|b| b.state.pos)
-            .collect();
+        let others = object_positions(frame);
         let mut best = (0.0, None);
         for p in frame.the_d().grid(IN_HAND_STEP) {
             if others.iter().any(|o| (o - p).xy().norm() <= 2.0 * r + 1e-6) {
@@ -189,6 +184,17 @@ impl Valuer {
         }
         best
     }
+}
+
+/// Where the balls of `frame` other than the cue ball are (a cue ball in hand is placed among
+/// these).
+pub fn object_positions(frame: &Frame) -> Vec<Vec3> {
+    frame
+        .balls()
+        .iter()
+        .filter(|b| b.kind != BallKind::Cue)
+        .map(|b| b.state.pos)
+        .collect()
 }
 
 /// The points a ball of `kind` scores when potted as the ball on in `frame` (a free ball
