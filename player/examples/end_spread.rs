@@ -11,6 +11,9 @@
 //! draws whose cue ball met a ball it did not meet played as meant, and the share of draws
 //! that still potted the ball.
 
+mod args;
+
+use args::arg;
 use snooker_engine::{EventKind, Shot, Vec3};
 use snooker_planner::{Noise, rng_for};
 use snooker_player::{PlanKind, PlayOptions, Player, play};
@@ -44,9 +47,9 @@ fn percentile(v: &mut [f64], p: f64) -> f64 {
 
 fn main() {
     let a: Vec<String> = std::env::args().skip(1).collect();
-    let from: u64 = a.first().and_then(|s| s.parse().ok()).unwrap_or(1);
-    let to: u64 = a.get(1).and_then(|s| s.parse().ok()).unwrap_or(from);
-    let n: u64 = a.get(2).and_then(|s| s.parse().ok()).unwrap_or(24);
+    let from: u64 = arg(&a, 0, "first layout", 1);
+    let to: u64 = arg(&a, 1, "last layout", from);
+    let n: u64 = arg(&a, 2, "draws", 24);
     let s = Noise::STANDARD;
     let zero = Noise::STANDARD.scaled(0.0);
     let parts: [(&str, Noise); 6] = [

@@ -21,6 +21,9 @@
 //! [SPREAD_M] [ERRORS_FILE]` writes one JSON line per visit (the open-table benchmark's
 //! fields), layout k played with seed k as in `benches/open_table.rs`.
 
+mod args;
+
+use args::arg;
 use snooker_engine::{BallKind, BallState, Vec3};
 use snooker_planner::Noise;
 use snooker_player::game::with_choices;
@@ -166,11 +169,15 @@ fn read_errors(path: &str) -> Result<Vec<f64>, String> {
 
 fn main() {
     let a: Vec<String> = std::env::args().skip(1).collect();
-    let from: u64 = a.first().and_then(|s| s.parse().ok()).unwrap_or(1);
-    let to: u64 = a.get(1).and_then(|s| s.parse().ok()).unwrap_or(from);
-    let effort: u64 = a.get(2).and_then(|s| s.parse().ok()).unwrap_or(4000);
-    let k: f64 = a.get(3).and_then(|s| s.parse().ok()).unwrap_or(1.0);
-    let sd: f64 = a.get(4).and_then(|s| s.parse().ok()).unwrap_or(0.0);
+    let from: u64 = arg(&a, 0, "first layout", 1);
+    let to: u64 = arg(&a, 1, "last layout", from);
+    let effort: u64 = arg(&a, 2, "effort", 4000);
+    let k: f64 = arg(&a, 3, "noise multiple", 1.0);
+    let sd: f64 = arg(&a, 4, "spread in metres", 0.0);
+    if !(sd.is_finite() && sd >= 0.0 && k.is_finite() && k >= 0.0 && from <= to) {
+        eprintln!("the spread and the noise multiple must be finite and >= 0, FROM <= TO");
+        std::process::exit(2);
+    }
     let errors: Vec<f64> = match a.get(5) {
         None => Vec::new(),
         Some(path) => match read_errors(path) {
