@@ -10,6 +10,7 @@
 use snooker_engine::{EventKind, Shot, Vec3};
 use snooker_planner::Noise;
 use snooker_player::chance::Direct;
+use snooker_player::spread::Spread;
 use snooker_player::{PlanKind, PlayOptions, Player, StrokeRecord, Valuer, play};
 use snooker_rules::Frame;
 
@@ -97,9 +98,8 @@ fn line(seed: u64, s: &StrokeRecord, prev: Option<&StrokeRecord>, valuer: &Value
     let (best_c, best) = best_chance(f, valuer, cue);
     let robust_here = valuer.robust(
         &f.with_nomination(None).unwrap_or_else(|_| f.clone()),
-        1.0,
-        0.0,
-        Vec3::zeros(),
+        // No spread: the value at the point itself.
+        &Spread::along_path(1.0, 0.0, 0.0, Vec3::zeros()),
     );
     let max_alt = s
         .decision

@@ -31,6 +31,7 @@ pub mod layouts;
 pub mod log;
 pub mod outcome;
 pub mod player;
+pub mod spread;
 pub mod value;
 pub mod watch;
 

@@ -23,6 +23,7 @@ use crate::agent::{Agent, ChooseError, Context};
 use crate::candidates::{self, ELEVATION, LineCandidate, Target};
 use crate::decision::{Considered, Decision, PlanKind};
 use crate::outcome::outcome;
+use crate::spread::{Spread, SpreadModel, end_shifts};
 use crate::value::Valuer;
 use rayon::prelude::*;
 use snooker_engine::{Cue, EventKind, Shot, Vec3};
@@ -103,6 +104,8 @@ struct PotObjective<'a> {
     frame: &'a Frame,
     valuer: &'a Valuer,
     pot: &'a str,
+    /// Over which spread the cue ball's end is valued.
+    spread: SpreadModel,
 }
 
 /// The cue ball's way in `shot` after its first contact: the length of its path from there to
@@ -151,9 +154,21 @@ impl Objective for PotObjective<'_> {
         }
         match self.frame.next(&v) {
             Next::Play(next) if next.state().to_play == self.frame.state().to_play => {
-                let (path, heading) = cue_path(shot, problem.cue);
                 let gain = v.points as f64 - v.foul_points() as f64;
-                Some(gain + self.valuer.robust(&next, trial.cue.speed, path, heading))
+                let spread = match self.spread {
+                    SpreadModel::AlongPath => {
+                        let (path, heading) = cue_path(shot, problem.cue);
+                        let sd = self.valuer.noise.speed;
+                        Spread::along_path(trial.cue.speed, sd, path, heading)
+                    }
+                    SpreadModel::Sensitivities => Spread::from_shifts(&end_shifts(
+                        self.frame,
+                        &trial.cue,
+                        trial.cue_final,
+                        &self.valuer.noise,
+                    )),
+                };
+                Some(gain + self.valuer.robust(&next, &spread))
             }
             _ => Some(o.value),
         }
@@ -310,6 +325,7 @@ impl Player {
                         frame: &t.frame,
                         valuer,
                         pot: &t.frame.balls()[t.ball].id,
+                        spread: SpreadModel::AlongPath,
                     };
                     let mut s = explore(&t.problem, &lc.line, strokes, &objective);
                     // Best first; ties in the grid's order.
@@ -362,7 +378,12 @@ impl Player {
         }
         found.sort_by(|a, b| b.2.total_cmp(&a.2));
         // Refine: the grids' speeds are 40 % apart, the cue ball's run goes as the speed
-        // squared, so the best strokes are taken on between the grid's points.
+        // squared, so the best strokes are taken on between the grid's points, valued over
+        // the spread of the stroke's own sensitivities (four more simulations a point: the
+        // spin's errors and the way's contacts, which the grid's closed form misses, move the
+        // end as much as the speed's). A refined stroke replaces its grid point only when it
+        // beats the grid's value of it (the planner's `refine`); docs/playing.md, "The
+        // fourth round", measured the pair over 300 layouts.
         let top = REFINED.min(found.len());
         let refined: Vec<(Scored, f64)> = found[..top]
             .par_iter()
@@ -373,6 +394,7 @@ impl Player {
                     frame: &t.frame,
                     valuer,
                     pot: &t.frame.balls()[t.ball].id,
+                    spread: SpreadModel::Sensitivities,
                 };
                 let r = refine(
                     &t.problem,

@@ -6,6 +6,7 @@
 //! end state by the next shot's chance the same way).
 
 use crate::chance::{self, Direct};
+use crate::spread::Spread;
 use snooker_engine::{BallKind, Params, Vec3};
 use snooker_planner::Noise;
 use snooker_rules::{Colour, Frame, On};
@@ -15,9 +16,10 @@ use snooker_rules::{Colour, Frame, On};
 pub struct Valuer {
     /// Standard deviation of the cue ball's direction used for the next stroke's chance, rad.
     pub sd: f64,
-    /// Standard deviation of the cue speed, m/s: how far along its way the cue ball may stop
-    /// short or run on ([`Valuer::robust`]).
-    pub speed_sd: f64,
+    /// The execution noise the cue ball's end is spread by ([`Spread::along_path`] takes its
+    /// speed, [`crate::spread::end_shifts`] all of it): the player's, each component at least
+    /// the standard noise's.
+    pub noise: Noise,
     /// The odds of the player's pots counted on for the rest of a break: a pot leads on to
     /// about `odds` more pots' worth of points ([`Valuer::future`]).
     pub odds: f64,
@@ -39,7 +41,13 @@ impl Valuer {
         let floor = chance::direction_sd(&Noise::STANDARD, p);
         Valuer {
             sd: chance::direction_sd(noise, p).max(floor),
-            speed_sd: noise.speed.max(Noise::STANDARD.speed),
+            noise: Noise {
+                aim: noise.aim.max(Noise::STANDARD.aim),
+                elevation: noise.elevation.max(Noise::STANDARD.elevation),
+                speed: noise.speed.max(Noise::STANDARD.speed),
+                side: noise.side.max(Noise::STANDARD.side),
+                height: noise.height.max(Noise::STANDARD.height),
+            },
             odds: ODDS,
         }
     }
@@ -73,16 +81,12 @@ impl Valuer {
         left.min(self.odds * points / pots)
     }
 
-    /// The value of `frame` to the player to play it, the cue ball having stopped there after
-    /// a stroke at cue speed `cue_speed` that ran it `path` metres after its first contact,
-    /// arriving along the unit plan vector `heading`: the mean of [`Valuer::from`] over where
-    /// the cue ball stops when the stroke errs. The distance a ball runs goes as its speed
-    /// squared, so a path of length L ends 2 L sd / v further or shorter for a speed error sd;
-    /// across its way it strays by half that (the heading's errors, turned by each contact and
-    /// cushion). Three-point Gauss–Hermite both ways over those normal spreads; a point where
-    /// the cue ball would have run into a ball counts nothing (a cannon is not counted on).
-    /// A position on a knife's edge counts for less than one the noise cannot spoil.
-    pub fn robust(&self, frame: &Frame, cue_speed: f64, path: f64, heading: Vec3) -> f64 {
+    /// The value of `frame` to the player to play it, the cue ball having stopped there, over
+    /// where it stops when the stroke errs (`spread`, [`crate::spread`]): the mean of
+    /// [`Valuer::from`] by three-point Gauss–Hermite along both of the spread's axes; a point
+    /// where the cue ball would have run into a ball counts nothing (a cannon is not counted
+    /// on). A position on a knife's edge counts for less than one the noise cannot spoil.
+    pub fn robust(&self, frame: &Frame, spread: &Spread) -> f64 {
         let Some(i) = frame.cue_index() else {
             return self.position(frame);
         };
@@ -90,9 +94,7 @@ impl Valuer {
             return self.position(frame);
         }
         let at = frame.balls()[i].state.pos;
-        let along = 2.0 * path * self.speed_sd / cue_speed.max(1e-3);
-        let across = 0.5 * along;
-        let side = Vec3::new(-heading.y, heading.x, 0.0);
+        let [u, v] = spread.axes;
         let (l, wid) = (frame.table().length, frame.table().width);
         let r = frame.params().ball_radius;
         const Z: [f64; 3] = [-1.224_744_871_391_589, 0.0, 1.224_744_871_391_589];
@@ -107,7 +109,7 @@ impl Valuer {
         let mut total = 0.0;
         for (&za, wa) in Z.iter().zip(W) {
             for (&zc, wc) in Z.iter().zip(W) {
-                let p = at + za * along * heading + zc * across * side;
+                let p = at + za * spread.sd[0] * u + zc * spread.sd[1] * v;
                 let p = Vec3::new(p.x.clamp(r, l - r), p.y.clamp(r, wid - r), at.z);
                 let moved = za != 0.0 || zc != 0.0;
                 let blocked = moved && others.iter().any(|o| (o - p).xy().norm() < 2.0 * r);
