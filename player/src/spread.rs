@@ -16,7 +16,7 @@
 //!   cushions and contacts the cue ball's way turns through. Four simulations a stroke, used
 //!   in the refinement.
 
-use snooker_engine::Vec3;
+use snooker_engine::{Cue, Vec3};
 use snooker_planner::{Noise, StrikeErrors, execute};
 use snooker_rules::Frame;
 
@@ -87,7 +87,7 @@ impl Spread {
 /// [`MAX_SHIFT`] (the position is lost). The elevation's error is left out: it moved the
 /// end by nothing measurable at the standard noise (docs/playing.md, "Where the spread comes
 /// from").
-pub fn end_shifts(frame: &Frame, cue: &snooker_engine::Cue, end: Vec3, noise: &Noise) -> [Vec3; 4] {
+pub fn end_shifts(frame: &Frame, cue: &Cue, end: Vec3, noise: &Noise) -> [Vec3; 4] {
     let zero = StrikeErrors {
         aim: 0.0,
         elevation: 0.0,
@@ -192,7 +192,7 @@ mod tests {
         // and zero for zero noise.
         let frame = Frame::open_table(15, 3);
         let i = frame.cue_index().unwrap();
-        let cue = snooker_engine::Cue {
+        let cue = Cue {
             speed: 1.5,
             aim: 0.3,
             offset: [0.0, 0.0],
