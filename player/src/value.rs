@@ -8,7 +8,7 @@
 use crate::chance::{self, Direct};
 use crate::spread::Spread;
 use snooker_engine::{BallKind, Params, Vec3};
-use snooker_planner::Noise;
+use snooker_planner::{Noise, NoiseComponent};
 use snooker_rules::{Colour, Frame, On};
 
 /// How the position value counts.
@@ -41,13 +41,7 @@ impl Valuer {
         let floor = chance::direction_sd(&Noise::STANDARD, p);
         Valuer {
             sd: chance::direction_sd(noise, p).max(floor),
-            noise: Noise {
-                aim: noise.aim.max(Noise::STANDARD.aim),
-                elevation: noise.elevation.max(Noise::STANDARD.elevation),
-                speed: noise.speed.max(Noise::STANDARD.speed),
-                side: noise.side.max(Noise::STANDARD.side),
-                height: noise.height.max(Noise::STANDARD.height),
-            },
+            noise: at_least_standard(noise),
             odds: ODDS,
         }
     }
@@ -197,6 +191,15 @@ pub fn object_positions(frame: &Frame) -> Vec<Vec3> {
         .filter(|b| b.kind != BallKind::Cue)
         .map(|b| b.state.pos)
         .collect()
+}
+
+/// `noise` with each component raised to at least the standard noise's.
+fn at_least_standard(noise: &Noise) -> Noise {
+    let mut floored = *noise;
+    for c in NoiseComponent::ALL {
+        floored.set(c, noise.get(c).max(Noise::STANDARD.get(c)));
+    }
+    floored
 }
 
 /// The points a ball of `kind` scores when potted as the ball on in `frame` (a free ball
