@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The Python package's part of the test command: a venv (target/py-venv) with what the tests
 # need from PyPI (pytest, numpy, pyarrow, ray, gymnasium), the package installed into it as a
-# user installs it, `pip install ./python` (maturin builds the wheel, sharing the workspace's target
-# directory, so the engine crates are not built twice), its formatting and lints, then its tests (python/tests) against the command line built by
+# user installs it, `pip install ./python` (maturin builds the wheel, sharing the workspace's
+# target directory and, here, its `ci` profile, so neither the engine crates nor their
+# dependencies are built twice), its formatting and lints, then its tests (python/tests)
+# against the command line built by
 # `cargo test --workspace --profile ci` (target/ci/snooker). The target directory is
 # $CARGO_TARGET_DIR when set, as cargo's.
 set -euo pipefail
@@ -12,10 +14,16 @@ target=$(realpath -m "${CARGO_TARGET_DIR:-target}")
 # so a venv copied with target/ (from another clone) would install into the original.
 venv=$target/py-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check pytest numpy pyarrow ray gymnasium
+# No pip cache: ray's and pyarrow's wheels are hundreds of MB, and the venv keeps them installed.
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check --no-cache-dir \
+    pytest numpy pyarrow ray gymnasium
 export CARGO_TARGET_DIR=$target PYO3_PYTHON=$venv/bin/python
 cargo fmt --manifest-path python/Cargo.toml -- --check
-cargo clippy --manifest-path python/Cargo.toml --release --all-targets -- -D warnings
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check --force-reinstall --no-deps ./python
+# The `ci` profile (python/Cargo.toml), as `cargo test` used: the dependencies it built are
+# reused from the target directory, not built again in release (time, and the disk of a clean
+# CI machine, which the release build once filled).
+cargo clippy --manifest-path python/Cargo.toml --profile ci --all-targets -- -D warnings
+MATURIN_PEP517_ARGS="--profile ci" "$venv/bin/python" -m pip install --quiet \
+    --disable-pip-version-check --no-cache-dir --force-reinstall --no-deps ./python
 SNOOKER_CLI=$target/ci/snooker RAY_AUTH_MODE=disabled \
     "$venv/bin/python" -m pytest -q python/tests

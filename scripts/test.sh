@@ -14,7 +14,14 @@ part() {
     local name=$1 start=$SECONDS
     shift
     "$@"
-    echo "== test.sh: $name took $((SECONDS - start)) s" >&2
+    echo "== test.sh: $name took $((SECONDS - start)) s ($(disk_free) free on the target's disk)" >&2
+}
+# What the build leaves free on the target directory's disk, printed after each part: a clean
+# build fills several GB, and a CI machine once ran out mid-way (stop 33).
+disk_free() {
+    local dir=${CARGO_TARGET_DIR:-target}
+    [ -d "$dir" ] || dir=.
+    df -h "$dir" 2>/dev/null | awk 'NR == 2 { print $4 }'
 }
 # The book: mdBook 0.5 is installed by cargo when missing (once per machine, into cargo's bin
 # directory; about 2.8 CPU-minutes of building, no default features: no server, no search), then
