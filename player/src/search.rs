@@ -87,6 +87,18 @@ fn cue_path(shot: &Shot, cue: usize) -> (f64, Vec3) {
     (length, heading)
 }
 
+impl<'a> PotObjective<'a> {
+    /// The objective of potting `target`'s ball, the end valued over `spread`.
+    fn new(target: &'a Target, valuer: &'a Valuer, spread: SpreadModel) -> Self {
+        PotObjective {
+            frame: &target.frame,
+            valuer,
+            pot: &target.frame.balls()[target.ball].id,
+            spread,
+        }
+    }
+}
+
 impl Objective for PotObjective<'_> {
     fn value(&self, problem: &Problem, trial: &Trial, shot: &Shot) -> Option<f64> {
         let v = self.frame.judge(shot).ok()?;
@@ -187,12 +199,7 @@ pub(crate) fn search(frame: &Frame, valuer: &Valuer, ctx: &Context, budget: u64)
             .map(|&li| {
                 let lc: &LineCandidate = &lines[li];
                 let t = &targets[lc.target];
-                let objective = PotObjective {
-                    frame: &t.frame,
-                    valuer,
-                    pot: &t.frame.balls()[t.ball].id,
-                    spread: SpreadModel::AlongPath,
-                };
+                let objective = PotObjective::new(t, valuer, SpreadModel::AlongPath);
                 let mut s = explore(&t.problem, &lc.line, strokes, &objective);
                 // Best first; ties in the grid's order.
                 s.sort_by(|a, b| b.value.total_cmp(&a.value));
@@ -256,12 +263,7 @@ pub(crate) fn search(frame: &Frame, valuer: &Valuer, ctx: &Context, budget: u64)
         .map(|(li, s, _)| {
             let lc: &LineCandidate = &lines[*li];
             let t = &targets[lc.target];
-            let objective = PotObjective {
-                frame: &t.frame,
-                valuer,
-                pot: &t.frame.balls()[t.ball].id,
-                spread: SpreadModel::Sensitivities,
-            };
+            let objective = PotObjective::new(t, valuer, SpreadModel::Sensitivities);
             let r = refine(
                 &t.problem,
                 &lc.line,
