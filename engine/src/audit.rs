@@ -7,6 +7,7 @@
 //! (cheap), [`audit`] also on a fine grid of instants.
 
 use crate::ball::{BallState, Motion};
+use crate::detect::{SKIN, TOUCH_TOL, VERIFY_TOL};
 use crate::impact::impulse::TOLERANCE;
 use crate::impact::separation::{MIN_SEPARATION, RESTING_APPROACH};
 use crate::motion::cloth::SEGMENT;
@@ -369,15 +370,37 @@ pub fn largest_relative_acceleration(p: &Params) -> f64 {
     2.0 * (friction * p.g + p.g * p.tilt() + p.nap_drift.abs())
 }
 
+/// How far along the normal a pair's contact may be found from where an earlier contact of the
+/// pair was, m: the contact detection accepts a crossing within 1e-9 m of the contact distance
+/// less its 1e-10 m skin, and counts a pair within 1e-9 m of touching and approaching as
+/// touching at once (after any change of law): the sum of the three.
+pub const CONTACT_BAND: f64 = SKIN + VERIFY_TOL + TOUCH_TOL;
+
+/// The least time after a micro-collision before the pair can meet again, s: they part at
+/// [`MIN_SEPARATION`] (at least) and their normal distance turns back at no more than
+/// [`largest_relative_acceleration`] a; it must come back to within [`CONTACT_BAND`] δ of where
+/// they parted: the later root of s t - a t^2 / 2 = δ, (s + sqrt(s^2 - 2 a δ)) / a, or the
+/// turn s / a where the distance never leaves the band. About 2 s / a - δ / s: the band
+/// shortens the bound by about 2e-6 s.
+pub fn least_remeet_gap(p: &Params) -> f64 {
+    let (s, a) = (MIN_SEPARATION, largest_relative_acceleration(p));
+    let disc = s * s - 2.0 * a * CONTACT_BAND;
+    if disc > 0.0 {
+        (s + disc.sqrt()) / a
+    } else {
+        s / a
+    }
+}
+
 /// The resting contacts' invariants ([`crate::impact::separation`]): a micro-collision (an
 /// approach of at most [`RESTING_APPROACH`]) lifts no ball off the cloth, and a pair of balls
 /// on the cloth that it leaves parting at [`MIN_SEPARATION`] meets again no sooner than
-/// 2 MIN_SEPARATION over their largest relative acceleration
-/// ([`largest_relative_acceleration`]) unless something else touches one of them first: at
-/// most that acceleration / (2 MIN_SEPARATION) micro-collisions per pair per second.
+/// [`least_remeet_gap`] (about 2 MIN_SEPARATION over their largest relative acceleration,
+/// [`largest_relative_acceleration`]) unless something else touches one of them first: at
+/// most about that acceleration / (2 MIN_SEPARATION) micro-collisions per pair per second.
 pub fn resting_contacts(shot: &Shot) -> Vec<Violation> {
     let p = &shot.params;
-    let least_gap = 2.0 * MIN_SEPARATION / largest_relative_acceleration(p);
+    let least_gap = least_remeet_gap(p);
     let mut out = Vec::new();
     // Pairs whose last impact was a micro-collision leaving both on the cloth: (i, j, time).
     let mut parted: Vec<(usize, usize, f64)> = Vec::new();

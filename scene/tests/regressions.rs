@@ -456,3 +456,109 @@ fn a_grazing_touch_is_the_separation_push_alone() {
         "{touches:?}"
     );
 }
+
+#[test]
+fn a_pair_pressed_together_may_meet_again_within_the_contact_band() {
+    // Found (seed 20261127, scene 511324 of the parameters kind: mu_slide = 1, e_ball = 0):
+    // "balls red3 and red12 met again 1.019e-4 s after a micro-collision (the cloth's
+    // accelerations allow no less than 1.019e-4 s)". red3 pushed red12 along in a train of
+    // micro-collisions; one touch came at red3's change from sliding to rolling, where the
+    // pair, 1.4e-11 m inside contact and approaching, counts as touching at once, while the
+    // touch before was found a skin (1e-10 m) inside: 2.8e-8 s sooner than the bound that
+    // ignored the detection's band. The engine was right; the audit's bound now counts the
+    // band (`audit::least_remeet_gap`).
+    let (_, shot) = run(r#"
+[params]
+mu_slide = 1.0
+e_ball = 0.0
+cue_tip_radius = 0.015601843431671196
+
+[[balls]]
+id = "cue"
+pos = [2.2836018124948843, 0.7501809729573916]
+vel = [1.8736055339843274, 3.805888549697449, 0.0]
+spin = [19.47218559828543, 29.206266538525234, -26.39492891287928]
+
+[[balls]]
+id = "red1"
+pos = [1.729241643793706, 1.3704263481444214]
+
+[[balls]]
+id = "yellow"
+pos = [2.154616348299405, 1.6091383904521306]
+vel = [1.4958072819581347, 0.4021768732840178, 0.0]
+spin = [169.99200630700784, 638.0629351660937, 159.41247668089477]
+
+[[balls]]
+id = "red3"
+pos = [3.5433956941254157, 0.22777909224197032]
+vel = [4.9677479781048355, 6.165518700954799, 0.0]
+spin = [-734.6019261995453, -82.47431153339663, -311.992289118364]
+
+[[balls]]
+id = "green"
+pos = [3.051561481908618, 0.6434122637846155]
+vel = [2.208693039763107, -0.11766443144883046, 0.0]
+spin = [33.98362812959879, 40.38959224040144, -43.51373798248856]
+
+[[balls]]
+id = "red5"
+pos = [0.8834816333205875, 1.702793215102731]
+vel = [0.02023262342346774, 0.004179407826226633, 0.0]
+spin = [-360.1883428337073, -279.94560077482765, -1273.9050717484213]
+
+[[balls]]
+id = "brown"
+pos = [2.23304136049936, 1.0084447541699044]
+vel = [-2.952431794123051, -1.8039085657457126, 0.0]
+spin = [-250.1285460110945, 1089.8053049472278, 618.6662255684566]
+
+[[balls]]
+id = "red7"
+pos = [3.2017718871758127, 1.4886724752367253]
+vel = [2.074066362968836, -3.461872675953554, 0.0]
+spin = [-33.644153265909715, -74.37119703314441, 1258.2124105156886]
+
+[[balls]]
+id = "red8"
+pos = [1.8928213195347847, 0.05222533038299934]
+vel = [4.277150529187794, -1.384250387740023, 0.0]
+spin = [29.621207177711014, -25.32940409565647, -17.251432282285673]
+
+[[balls]]
+id = "red9"
+pos = [1.3597207849142152, 0.42710378444577557]
+vel = [-0.6255627432994372, -0.1464704919095726, 0.0]
+spin = [733.5363218207452, 791.2082425139331, 758.1807725058674]
+
+[[balls]]
+id = "red10"
+pos = [0.7633094304236178, 0.8007432650157832]
+
+[[balls]]
+id = "red11"
+pos = [2.981104553013121, 0.9206353434748451]
+vel = [-15.495091588449489, -5.462902108963221, 0.0]
+spin = [-1162.617242839734, 40.544276379592404, 798.5579827553761]
+
+[[balls]]
+id = "red12"
+pos = [2.9909137470864255, 1.724355806565692]"#);
+    let p = &shot.params;
+    let id = |name: &str| shot.tracks.iter().position(|t| t.id == name).unwrap();
+    let pair = [id("red3"), id("red12")];
+    let touches: Vec<_> = shot
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallBall && pair.iter().all(|b| e.balls.contains(b)))
+        .collect();
+    let without_band = 2.0 * MIN_SEPARATION / audit::largest_relative_acceleration(p);
+    let least = audit::least_remeet_gap(p);
+    assert!(least < without_band && least > 0.97 * without_band);
+    let gaps: Vec<f64> = touches.windows(2).map(|w| w[1].t - w[0].t).collect();
+    // A train of micro-collisions, one gap shorter than the band-free bound, none shorter
+    // than the bound.
+    assert!(gaps.len() > 100, "{}", gaps.len());
+    assert!(gaps.iter().any(|&g| g < without_band));
+    assert!(gaps.iter().all(|&g| g >= least), "{gaps:?}");
+}
