@@ -3,7 +3,7 @@
 //! [`Verdict`] on a stroke simulated by the engine ([`Frame::judge`]), and the frame that
 //! follows ([`Frame::next`]), so that frame + strike -> frame + strike -> ... plays a whole
 //! frame. The rules are the WPBSA Official Rules of Snooker as the contract in
-//! `shared/formats.md` ("Frame", "Referee result") states them; `docs/rules.md` says which
+//! `docs/formats.md` ("Frame", "Referee result") states them; `docs/rules.md` says which
 //! rule each decision implements. No physics here: the engine simulates, this crate judges.
 //!
 //! ```

@@ -1,5 +1,5 @@
 //! Scene files (TOML) and the JSON result of the snooker engine: one home for the formats
-//! scripts outside the project read (the contract in `shared/formats.md`, copied and
+//! scripts outside the project read (the team's shared contract, copied and
 //! extended in docs/formats.md). A scene file becomes an engine [`Setup`] with the cue strike
 //! applied, its limits and a record of the strike; every bad input is one [`SceneError`]
 //! naming the file, the key and the reason. Used by the `snooker` command line, the

@@ -1,4 +1,4 @@
-//! The JSON result of a shot (the contract in `shared/formats.md`; extended, never renamed) and
+//! The JSON result of a shot (the contract in `docs/formats.md`; extended, never renamed) and
 //! the human summary printed by `snooker simulate`.
 
 use crate::Scene;

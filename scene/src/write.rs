@@ -1,4 +1,4 @@
-//! Scene files written from values (the format of `shared/formats.md`), every number so
+//! Scene files written from values (the format of `docs/formats.md`), every number so
 //! that it reads back to the bit: a number as TOML reads it back ([`num`]), and a scene file
 //! with its `[cue]` replaced ([`with_cue`]: `snooker plan --scene-out`). Scenes built from
 //! parts are [`crate::SceneFile`]s.
