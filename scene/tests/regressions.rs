@@ -562,3 +562,111 @@ pos = [2.9909137470864255, 1.724355806565692]"#);
     assert!(gaps.iter().any(|&g| g < without_band));
     assert!(gaps.iter().all(|&g| g >= least), "{gaps:?}");
 }
+
+#[test]
+fn a_ball_thrown_up_off_a_squeezed_ball_lands_on_it_not_inside_it() {
+    // Found (seed 20261130, scene 608350 of the parameters kind: ball radius 40 mm, e_ball = 0):
+    // "balls red5 and red8 overlap by 2.041e-5 m at t = 2.4067713636834562". red8 hits red5,
+    // which lies against the top cushion; the same-instant chain (ball, cushion, ball, ...)
+    // ends with red8 thrown up and red5's last push off the cushion undoing all but 1.5e-8 m/s
+    // of the pair's separation, while red5's cloth friction presses it back into red8. The pair
+    // left the search sphere by 1e-19 m, below the quartic's rounding, and red8 landed 20 um
+    // inside red5. A touching pair that is pressed back before it leaves the touching band is
+    // now a contact at once: the chain goes on to a train of micro-collisions.
+    let (scene, shot) = run(r#"
+[params]
+cushion_bottom_speed = 18.353818850353814
+ball_radius = 0.04
+e_ball = 0.0
+cushion_height = 0.04293346321538353
+
+[[balls]]
+id = "cue"
+pos = [0.0398922899012327, 0.9168017909176586]
+
+[[balls]]
+id = "red1"
+pos = [0.06592581241899506, 1.6712050982255593]
+
+[[balls]]
+id = "yellow"
+pos = [0.09316813349099089, 1.5959863775330994]
+vel = [-2.6590932937122282, -0.41542075906999687, 0.0]
+spin = [-90.23766427728692, 631.8938810240188, 177.82474998215767]
+
+[[balls]]
+id = "red3"
+pos = [1.8533516853384748, 0.05048897823312154]
+
+[[balls]]
+id = "green"
+pos = [0.09859275658543123, 0.136156692828775]
+vel = [-0.585808702835575, 2.5035908307955186, 0.0]
+spin = [1.1082621798078134, 27.75123521444186, -14.548041220888381]
+
+[[balls]]
+id = "red5"
+pos = [3.529107710098767, 1.4118491960074022]
+
+[[balls]]
+id = "brown"
+pos = [3.460471258113341, 0.07864462140074549]
+vel = [0.120395476919029, -0.9815002185164614, 0.0]
+spin = [615.0026711594115, -805.29302037123, 358.0849923720505]
+
+[[balls]]
+id = "red7"
+pos = [3.529107710098767, 0.6873991644932784]
+vel = [-1.7074333088455993, -3.846562595504208, 0.0]
+spin = [15.838685086785476, -6.069819032673124, -3.86537847863668]
+
+[[balls]]
+id = "red8"
+pos = [1.7743523833123775, 1.7138816337368703]
+
+[[balls]]
+id = "red9"
+pos = [0.14988392681099366, 1.7280874903866894]
+vel = [-1.6050469321853778, -0.08715912291666274, 0.0]
+spin = [693.9570313487661, -150.01913066539583, 633.9835484957574]
+
+[[balls]]
+id = "red10"
+pos = [0.0398922899012327, 0.5650933495044508]
+vel = [6.554288663984741, 6.455049546880167, 0.0]
+spin = [14.166973988499322, -18.825523163598582, -10.862983819392557]
+
+[[balls]]
+id = "red11"
+pos = [0.11563717583282314, 0.5908365477364179]
+vel = [-0.4187827637657534, 0.9924667750759283, 0.0]
+spin = [-0.15433231374717338, 6.108127895955276, 8.896162170245676]
+
+[[balls]]
+id = "red12"
+pos = [0.24538999137338072, 0.0398922899012327]"#);
+    let id = |name: &str| shot.index_of(name).unwrap();
+    let pair = [id("red5"), id("red8")];
+    let thrown = 2.39924251880702;
+    assert!(impact_near(&scene, &shot, "red8", thrown));
+    let touches: Vec<f64> = shot
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::BallBall && pair.iter().all(|b| e.balls.contains(b)))
+        .map(|e| e.t)
+        .collect();
+    // The chain at the instant ends on the pair, not on red5's cushion, and the pair touches
+    // again while red8 is in the air (it lands 7.5 ms later).
+    let last_at_instant = shot
+        .events
+        .iter()
+        .rfind(|e| (e.t - thrown).abs() < 1e-12)
+        .unwrap();
+    assert_eq!(last_at_instant.kind, EventKind::BallBall);
+    assert!(
+        touches
+            .iter()
+            .any(|&t| t > thrown + 1e-6 && t < thrown + 5e-3),
+        "{touches:?}"
+    );
+}

@@ -13,10 +13,11 @@ pub mod roots;
 
 /// Distance within which two bodies count as touching now, m.
 pub const TOUCH_TOL: f64 = 1e-9;
-/// Contact skin, m: crossings are searched at the contact distance minus this. Bodies placed
-/// exactly touching are then a skin apart, so a push that starts from zero relative velocity
-/// (a resting ball pressed by another's acceleration) still crosses and is found, instead of
-/// sinking in unseen. Far below any measurable length.
+/// Contact skin, m: crossings are searched at the contact distance minus this. A cushion's
+/// line is then crossed, and found, by a ball placed exactly touching it and pushed from zero
+/// relative velocity, instead of sinking in unseen; a pair of balls touching within
+/// [`TOUCH_TOL`] and pressed together is a contact at once (`roots::entries`). Far below any
+/// measurable length.
 pub const SKIN: f64 = 1e-10;
 /// A root is accepted only if the contact distance there is right to within this, m.
 pub const VERIFY_TOL: f64 = 1e-9;
