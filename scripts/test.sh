@@ -24,14 +24,16 @@ disk_free() {
     df -h "$dir" 2>/dev/null | awk 'NR == 2 { print $4 }'
 }
 # The book: mdBook 0.5 is installed by cargo when missing (once per machine, into cargo's bin
-# directory; about 2.8 CPU-minutes of building, no default features: no server, no search), then
+# directory; no default features: no server, no search; built without optimisation, which
+# halves its build and leaves a small book's rendering well under a second), then
 # `mdbook build docs` (to target/book), then every relative link and anchor of the built book and
 # of the README checked offline, and the architecture page's generated parts against the tree.
 book() {
     local mdbook
     mdbook=$(command -v mdbook || true)
     if [ -z "$mdbook" ] || ! "$mdbook" --version | grep -q '^mdbook v0\.5\.'; then
-        cargo install mdbook --locked --no-default-features --version 0.5.4
+        CARGO_PROFILE_RELEASE_OPT_LEVEL=0 \
+            cargo install mdbook --locked --no-default-features --version 0.5.4
         mdbook=${CARGO_HOME:-$HOME/.cargo}/bin/mdbook
     fi
     "$mdbook" build docs

@@ -7,6 +7,7 @@
 
 use rand::SeedableRng;
 use rand::rngs::ChaCha8Rng;
+use rayon::prelude::*;
 use snooker_planner::{Problem, Request, ShotKind, plan_problem, reachable, scene_out};
 use snooker_scene::parse;
 use std::collections::BTreeMap;
@@ -14,14 +15,81 @@ use std::collections::BTreeMap;
 const CASES: usize = 200;
 const REACH: f64 = 0.005;
 
+/// One drawn case: its scene, the drawn strike's kind and pocket, and the problem posed.
+struct Case {
+    text: String,
+    pocket: String,
+    target: [f64; 2],
+    kind: ShotKind,
+    strike: String,
+    problem: Problem,
+}
+
+/// What planning one case gave: reached within [`REACH`], or why not; shots simulated.
+struct Outcome {
+    reached: bool,
+    miss: Option<String>,
+    shots: u64,
+}
+
+/// Plans one case and replays the plan from the scene it writes (to the bit).
+fn plan_case(c: &Case) -> Outcome {
+    let plan = match plan_problem(&c.problem, "case") {
+        Ok(p) => p,
+        Err(e) => {
+            return Outcome {
+                reached: false,
+                miss: Some(format!(
+                    "{} {e}\n{}pocket {}, target {:?}, drawn strike {}",
+                    c.kind.name(),
+                    c.text,
+                    c.pocket,
+                    c.target,
+                    c.strike
+                )),
+                shots: 0,
+            };
+        }
+    };
+    assert!(plan.best.potted);
+    let reached = plan.best.distance <= REACH;
+    let miss = (!reached).then(|| {
+        format!(
+            "{} drawn, {:.1} mm ({} planned)\n{}pocket {}, target {:?}, drawn strike {}",
+            c.kind.name(),
+            plan.best.distance * 1e3,
+            plan.best.route.kind.name(),
+            c.text,
+            c.pocket,
+            c.target,
+            c.strike
+        )
+    });
+    // Replays to the bit from the scene written.
+    let out = scene_out::with_strike(&c.text, &plan.best.strike).unwrap();
+    let replayed = parse(&out, "out.toml").unwrap();
+    let shot = snooker_engine::simulate(&replayed.setup, &replayed.options).unwrap();
+    let end = shot.final_states()[c.problem.cue].pos;
+    assert_eq!(
+        [end.x.to_bits(), end.y.to_bits()],
+        plan.best.cue_final.map(f64::to_bits),
+        "{out}"
+    );
+    Outcome {
+        reached,
+        miss,
+        shots: plan.shots_simulated,
+    }
+}
+
 #[test]
 fn plans_reach_known_targets_and_replay_exactly() {
+    // The cases are drawn in order from one generator, then planned in parallel (each plan is
+    // deterministic), so the set and every result are those of a sequential run.
     let mut rng = ChaCha8Rng::seed_from_u64(13);
-    let (mut cases, mut reached, mut shots, mut tried) = (0, 0, 0, 0);
-    let mut misses = Vec::new();
-    // Per kind of the drawn strike: cases and reached.
-    let mut by_kind: BTreeMap<ShotKind, (usize, usize)> = BTreeMap::new();
-    while cases < CASES {
+    let mut drawn = Vec::new();
+    let mut tried = 0;
+    while drawn.len() < CASES {
         tried += 1;
         assert!(tried < 200 * CASES, "too few potting strikes");
         let Some(reachable::Reachable {
@@ -43,42 +111,31 @@ fn plans_reach_known_targets_and_replay_exactly() {
         let Ok(problem) = Problem::new(&scene, req) else {
             continue;
         };
-        cases += 1;
-        by_kind.entry(kind).or_default().0 += 1;
-        let plan = match plan_problem(&problem, "case") {
-            Ok(p) => p,
-            Err(e) => {
-                misses.push(format!(
-                    "{} {e}\n{text}pocket {pocket}, target {target:?}, drawn strike {strike:?}",
-                    kind.name()
-                ));
-                continue;
-            }
-        };
-        shots += plan.shots_simulated;
-        assert!(plan.best.potted);
-        if plan.best.distance <= REACH {
+        let strike = format!("{strike:?}");
+        drawn.push(Case {
+            text,
+            pocket,
+            target,
+            kind,
+            strike,
+            problem,
+        });
+    }
+    let outcomes: Vec<Outcome> = drawn.par_iter().map(plan_case).collect();
+    let cases = drawn.len();
+    let (mut reached, mut shots) = (0, 0);
+    let mut misses = Vec::new();
+    // Per kind of the drawn strike: cases and reached.
+    let mut by_kind: BTreeMap<ShotKind, (usize, usize)> = BTreeMap::new();
+    for (c, o) in drawn.iter().zip(outcomes) {
+        let entry = by_kind.entry(c.kind).or_default();
+        entry.0 += 1;
+        if o.reached {
             reached += 1;
-            by_kind.entry(kind).or_default().1 += 1;
-        } else {
-            misses.push(format!(
-                "{} drawn, {:.1} mm ({} planned)\n{text}pocket {pocket}, target {target:?}, \
-                 drawn strike {strike:?}",
-                kind.name(),
-                plan.best.distance * 1e3,
-                plan.best.route.kind.name()
-            ));
+            entry.1 += 1;
         }
-        // Replays to the bit from the scene written.
-        let out = scene_out::with_strike(&text, &plan.best.strike).unwrap();
-        let replayed = parse(&out, "out.toml").unwrap();
-        let shot = snooker_engine::simulate(&replayed.setup, &replayed.options).unwrap();
-        let end = shot.final_states()[problem.cue].pos;
-        assert_eq!(
-            [end.x.to_bits(), end.y.to_bits()],
-            plan.best.cue_final.map(f64::to_bits),
-            "{out}"
-        );
+        shots += o.shots;
+        misses.extend(o.miss);
     }
     let share = reached as f64 / cases as f64;
     for (kind, (n, ok)) in &by_kind {
