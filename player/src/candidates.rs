@@ -49,18 +49,17 @@ pub struct LineCandidate {
 }
 
 /// The nomination a stroke at the ball of `kind` needs in `frame`, if one is needed: the
-/// colour itself when a colour is on (or played as a free ball); with a free ball and a red
-/// played, any colour that may be nominated (the red is on anyway).
+/// colour itself when a colour is on or when it is played as a free ball. With a free ball
+/// and the ball on itself played (a red, or the closing colour), none: the free ball is
+/// declined ([`Frame::with_nomination`]), since a nominated free ball must be hit first
+/// (WPBSA Section 3 Rule 12(c)(i)).
 pub fn nomination(frame: &Frame, kind: BallKind) -> Option<Colour> {
     let s = frame.state();
     let needed = s.on == On::Colour || s.free_ball;
     if !needed {
         return None;
     }
-    match Colour::of(kind) {
-        Some(c) if frame.legal_nominations().contains(&c) => Some(c),
-        _ => frame.legal_nominations().first().copied(),
-    }
+    Colour::of(kind).filter(|c| frame.legal_nominations().contains(c))
 }
 
 /// The search's bounds for the player's strokes: the planner's default speeds and offsets,
@@ -184,4 +183,32 @@ pub fn lines(targets: &[Target], valuer: &Valuer) -> Vec<LineCandidate> {
     }
     out.sort_by(|a, b| b.estimate.total_cmp(&a.estimate));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn with_a_free_ball_the_ball_on_is_played_declining_it_and_a_colour_as_the_free_ball() {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../rules/tests/frames/free_ball_red_first.toml"
+        ))
+        .unwrap()
+        .replace("nominated = \"blue\"\n", "");
+        // The position without its strike (a strike needs the nomination).
+        let (head, rest) = text.split_once("[cue]").unwrap();
+        let text = format!("{head}{}", &rest[rest.find("[[balls]]").unwrap()..]);
+        let frame = snooker_rules::parse(&text, "free_ball_red_first.toml")
+            .unwrap()
+            .frame;
+        assert!(frame.state().free_ball && frame.state().nominated.is_none());
+        // A red is the ball on: no nomination, and the frame played declines the free ball.
+        assert_eq!(nomination(&frame, BallKind::Red), None);
+        let declined = frame.with_nomination(None).unwrap();
+        assert!(!declined.state().free_ball);
+        // A colour is nominated as the free ball.
+        assert_eq!(nomination(&frame, BallKind::Blue), Some(Colour::Blue));
+    }
 }

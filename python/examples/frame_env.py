@@ -9,7 +9,8 @@ hand); ``on``, the ball on (0 red, 1 any colour, 2-7 yellow to black); ``ball_in
 Action: eight numbers in [-1, 1] (the normalised space Gymnasium recommends), mapped
 linearly onto [speed 0.2-8 m/s, aim -pi-pi rad, side offset, height offset (within 0.8 of the
 miscue limit, 0.5 R), elevation 0-0.5 rad, nomination 0-6, u 0-1, v 0-1] (``physical``).
-``nomination`` picks among the colours the player may nominate (when one must be nominated);
+``nomination`` picks among the colours the player may nominate (when one must be nominated;
+with a free ball the first choice, 0, declines it and plays the ball on: ``nomination_choices``);
 (u, v) place the cue ball in hand in the D (radius sqrt(u) of the D's, at angle v of the half
 circle), moved to the nearest valid place if it touches a ball.
 
@@ -37,6 +38,18 @@ ON = ["red", "colour", "yellow", "green", "brown", "blue", "pink", "black"]
 OFFSET_MAX = 0.8 * 0.5 * 0.0262
 ACTION_LOW = np.array([0.2, -math.pi, -OFFSET_MAX, -OFFSET_MAX, 0.0, 0.0, 0.0, 0.0])
 ACTION_HIGH = np.array([8.0, math.pi, OFFSET_MAX, OFFSET_MAX, 0.5, 6.0, 1.0, 1.0])
+
+
+def nomination_choices(frame) -> list:
+    """What the action's ``nomination`` picks from on ``frame``: nothing when no nomination is
+    needed; the colours that may be nominated with a colour on; with a free ball, None (the
+    free ball declined, WPBSA Section 3 Rule 12(b)) and then those colours."""
+    noms = frame.legal_nominations
+    if not noms or frame.nominated is not None:
+        return []
+    if frame.free_ball:
+        return [None] + noms
+    return noms if frame.on == "colour" else []
 
 
 class SnookerFrameEnv(gym.Env):
@@ -91,9 +104,9 @@ class SnookerFrameEnv(gym.Env):
         """The nomination and the cue ball's place the action asks for, as the frame allows."""
         f = self.frame
         nominated = None
-        noms = f.legal_nominations
-        if noms and f.nominated is None and (f.on == "colour" or f.free_ball):
-            nominated = noms[min(int(action[5]), len(noms) - 1) % len(noms)]
+        choices = nomination_choices(f)
+        if choices:
+            nominated = choices[min(int(action[5]), len(choices) - 1)]
         cue_ball = None
         if f.ball_in_hand:
             (cx, cy), radius = f.the_d
@@ -113,13 +126,16 @@ class SnookerFrameEnv(gym.Env):
         speed, aim, side, height, elevation = (float(x) for x in a[:5])
         nominated, cue_ball = self._choices(a)
         strike = {"speed": speed, "aim": aim, "offset": [side, height], "elevation": elevation}
+        frame = self.frame
+        if frame.free_ball and nominated is None:
+            frame = frame.with_nomination(None)  # the free ball declined
         try:
-            verdict, after = self.frame.play(strike, nominated=nominated, cue_ball=cue_ball)
+            verdict, after = frame.play(strike, nominated=nominated, cue_ball=cue_ball)
         except ValueError:
             # A strike the cue cannot play (the tip would go through the cloth): level and
             # central instead.
             strike.update(offset=[0.0, 0.0], elevation=0.0)
-            verdict, after = self.frame.play(strike, nominated=nominated, cue_ball=cue_ball)
+            verdict, after = frame.play(strike, nominated=nominated, cue_ball=cue_ball)
         player = self.frame.to_play
         self.strokes += 1
         reward = float(verdict.points) - float(verdict.foul_points)

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 import snooker
-from frame_env import ACTION_HIGH, ACTION_LOW, SnookerFrameEnv
+from frame_env import ACTION_HIGH, ACTION_LOW, SnookerFrameEnv, nomination_choices
 
 
 class PlayerAgent:
@@ -50,8 +50,9 @@ def action_of(frame, d) -> np.ndarray:
     s = d.strike
     aim = math.remainder(s.aim, 2.0 * math.pi)
     nomination = 0.0
-    if d.nominated is not None:
-        nomination = frame.legal_nominations.index(d.nominated) + 0.5
+    choices = nomination_choices(frame)
+    if choices:
+        nomination = choices.index(d.nominated) + 0.5
     u, v = 0.0, 0.5
     if d.cue_ball is not None:
         (cx, cy), radius = frame.the_d

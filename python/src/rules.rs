@@ -234,7 +234,8 @@ impl Frame {
         self.0.nearest_placement(preferred).map(|p| (p[0], p[1]))
     }
 
-    /// This frame with `nominated` (a colour's name, or None) nominated.
+    /// This frame with `nominated` (a colour's name, or None) nominated; None with a free
+    /// ball declines it (the ball on is played, `free_ball` false).
     #[pyo3(signature = (nominated))]
     fn with_nomination(&self, nominated: Option<&str>) -> PyResult<Frame> {
         let c = nominated.map(colour).transpose()?;

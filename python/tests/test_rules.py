@@ -76,6 +76,17 @@ def test_after_a_red_the_colours_can_be_nominated_and_the_frame_chains_through_i
     assert after.with_nomination("black").balls_on == ["black"]
 
 
+def test_a_free_ball_nominated_must_be_hit_first_and_may_be_declined():
+    path = ROOT / "rules" / "tests" / "frames" / "free_ball_red_first.toml"
+    f = snooker.frame(path)
+    verdict, _ = f.play(strike_of(path))
+    assert not verdict.legal and verdict.potted == ["red1"]
+    declined = f.with_nomination(None)
+    assert not declined.free_ball
+    verdict, after = declined.play(strike_of(path))
+    assert verdict.legal and verdict.points == 1 and after.on == "colour"
+
+
 def test_bad_frames_and_choices_raise_naming_the_key():
     with pytest.raises(ValueError, match=r"key `frame.scores`"):
         snooker.Frame.from_dict({"layout": "break-off", "frame": {"on": "red", "scores": [1]}})

@@ -312,6 +312,13 @@ impl Frame {
         }
     }
 
+    /// The kind of the ball nominated as a free ball, if a free ball is taken: the ball the
+    /// cue ball must meet first (WPBSA Section 3 Rule 12(c)(i)).
+    pub fn free_ball_nominated(&self) -> Option<BallKind> {
+        let s = &self.state;
+        s.nominated.filter(|_| s.free_ball).map(Colour::kind)
+    }
+
     /// True when a ball of this kind is on for the stroke (WPBSA Section 2 Rule 11): a red
     /// with reds on, the nominated colour with a colour on, the closing colour; and with a free
     /// ball the nominated ball too (Section 3 Rule 12).
@@ -361,10 +368,16 @@ impl Frame {
     }
 
     /// This frame with `nominated` as the nomination for the stroke (checked as
-    /// [`Frame::new`] checks it); `None` clears it.
+    /// [`Frame::new`] checks it); `None` clears it, and with a free ball declines the free
+    /// ball (`free_ball` false: the ball on is played as the ball on).
     pub fn with_nomination(&self, nominated: Option<Colour>) -> Result<Frame, FrameError> {
         let mut f = self.clone();
         f.state.nominated = nominated;
+        // Nothing nominated with a free ball declines it: the ball on is played as without
+        // one (WPBSA Section 3 Rule 12(b): the player *may* nominate).
+        if nominated.is_none() {
+            f.state.free_ball = false;
+        }
         f.check_state()?;
         Ok(f)
     }

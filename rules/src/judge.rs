@@ -88,9 +88,14 @@ impl Frame {
 
         // Fouls, in the contract's order.
         let mut reasons = Vec::new();
+        // With a free ball nominated, the cue ball must meet it first, alone or at the same
+        // instant as the ball on (WPBSA Section 3 Rule 12(c)(i)).
+        let free_missed = self
+            .free_ball_nominated()
+            .is_some_and(|free| !h.first.iter().any(|&i| kind(i) == free));
         if h.first.is_empty() {
             reasons.push(FoulReason::NoBallHit);
-        } else if h.first.iter().any(|&i| !on(i)) {
+        } else if free_missed || h.first.iter().any(|&i| !on(i)) {
             reasons.push(FoulReason::FirstHitNotOn);
         }
         let colour_on = s.on != On::Red;

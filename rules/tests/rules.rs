@@ -480,6 +480,25 @@ fn with_a_free_ball_another_ball_hit_first_is_a_foul() {
     assert_eq!(foul(&v), (FoulReason::FirstHitNotOn, 7));
 }
 
+#[test]
+fn with_a_free_ball_nominated_the_ball_on_hit_first_is_a_foul_unless_declined() {
+    // Rule 12(c)(i): the nominated free ball must be hit first (or with the ball on at once).
+    let (f, v) = play("free_ball_red_first");
+    assert_eq!(foul(&v), (FoulReason::FirstHitNotOn, 4));
+    assert_eq!((v.points, v.scores), (0, [4, 4]));
+    assert_eq!(v.potted, ["red1"]);
+    // Rule 12(b): the player may nominate; nothing nominated declines the free ball, and the
+    // same stroke is a red potted.
+    let declined = f.frame.with_nomination(None).unwrap();
+    assert!(!declined.state().free_ball);
+    let setup = declined.setup(&f.strike.unwrap()).unwrap();
+    let v = declined
+        .judge(&simulate(&setup, declined.options()).unwrap())
+        .unwrap();
+    assert!(v.legal());
+    assert_eq!((v.points, v.scores), (1, [0, 5]));
+}
+
 // ---- End of the frame (WPBSA Section 3 Rule 4) ----
 
 #[test]

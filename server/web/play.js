@@ -30,6 +30,8 @@ export class PlayPanel {
     const noms = (position.rules && position.rules.nominations) || [];
     const needs = f.on === "colour" || f.free_ball;
     nom.replaceChildren(...noms.map((c) => new Option(c, c)));
+    // A free ball may be declined (WPBSA Section 3 Rule 12(b)): the ball on is played.
+    if (f.free_ball) nom.prepend(new Option("none: decline the free ball", ""));
     nom.disabled = !needs || noms.length === 0;
     if (needs && noms.length) nom.value = noms.includes("black") ? "black" : noms[noms.length - 1];
   }
@@ -40,7 +42,8 @@ export class PlayPanel {
     const f = structuredClone(lab.position.frame);
     const needs = f.on === "colour" || f.free_ball;
     if (needs) f.nominated = $("nominate").value;
-    else delete f.nominated;
+    if (f.free_ball && !f.nominated) f.free_ball = false; // declined: the ball on is played
+    if (!f.nominated) delete f.nominated;
     const scene = lab.scene();
     scene.frame = f;
     return scene;
