@@ -118,7 +118,7 @@ pub enum Problem {
         colour: Colour,
     },
     /// A stroke to judge with a colour or a free ball on and nothing nominated.
-    #[error("a stroke with on = \"{on}\"{} needs the ball nominated (nominated = \"black\", ...)", if *.free_ball { " and a free ball" } else { "" })]
+    #[error("a stroke with on = \"{on}\"{} needs the ball nominated (nominated = \"black\", ...){}", if *.free_ball { " and a free ball" } else { "" }, if *.free_ball { "; to decline the free ball and play the ball on, set free_ball = false" } else { "" })]
     NoNomination {
         /// The ball on.
         on: On,
