@@ -499,6 +499,15 @@ fn with_a_free_ball_nominated_the_ball_on_hit_first_is_a_foul_unless_declined() 
     assert_eq!((v.points, v.scores), (1, [0, 5]));
 }
 
+#[test]
+fn in_the_closing_sequence_the_ball_on_hit_before_the_free_ball_is_a_foul_and_goes_back() {
+    let (f, v) = play("free_ball_closing_on_first");
+    assert_eq!(foul(&v), (FoulReason::FirstHitNotOn, 4));
+    assert_eq!((v.points, v.scores), (0, [24, 24]));
+    assert_eq!(respotted(&v), [("yellow", [0.737, 0.597])]);
+    assert_eq!(next(&f, &v).state().on, On::Closing(Colour::Yellow));
+}
+
 // ---- End of the frame (WPBSA Section 3 Rule 4) ----
 
 #[test]
