@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 use std::time::Instant;
-use tokio::sync::Semaphore;
+use tokio::sync::{Notify, Semaphore};
 
 /// Where a job's progress is read: shots simulated so far.
 pub trait Progress: Send + Sync {
@@ -72,6 +72,9 @@ pub struct Job {
     cancel_reason: Mutex<Option<String>>,
     parts: Mutex<Vec<Arc<RawValue>>>,
     bytes: AtomicUsize,
+    /// Wakes a job waiting for a slot when it is cancelled, so that it leaves the queue at
+    /// once instead of when a slot frees.
+    woken: Notify,
 }
 
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
@@ -119,13 +122,21 @@ impl Job {
         *lock(&self.note) = note.into();
     }
 
-    /// Cancels the job, saying why.
+    /// Cancels the job, saying why. A job still waiting for a slot is cancelled at once (and
+    /// leaves the queue); a running one stops when its work sees the flag.
     pub fn cancel_with(&self, reason: &str) {
-        let mut r = lock(&self.cancel_reason);
-        if r.is_none() {
-            *r = Some(reason.to_string());
-        }
+        let reason = {
+            let mut r = lock(&self.cancel_reason);
+            r.get_or_insert_with(|| reason.to_string()).clone()
+        };
         self.cancel.cancel();
+        {
+            let mut state = lock(&self.state);
+            if matches!(*state, State::Queued) {
+                *state = State::Cancelled(reason);
+            }
+        }
+        self.woken.notify_one();
     }
 
     fn finished(&self) -> bool {
@@ -293,18 +304,27 @@ impl Jobs {
             cancel_reason: Mutex::new(None),
             parts: Mutex::new(Vec::new()),
             bytes: AtomicUsize::new(0),
+            woken: Notify::new(),
         });
         self.keep(job.clone());
         let jobs = self.clone();
         let run = job.clone();
         tokio::spawn(async move {
-            let permit = jobs.heavy.clone().acquire_owned().await;
-            jobs.queued.fetch_sub(1, Ordering::SeqCst);
-            let Ok(_permit) = permit else {
-                *lock(&run.state) = State::Failed(ApiError::internal("the job slots closed"));
-                return;
+            // Wait for a slot, or leave the queue as soon as the job is cancelled.
+            let permit = tokio::select! {
+                p = jobs.heavy.clone().acquire_owned() => Some(p),
+                () = run.woken.notified() => None,
             };
-            if run.cancel.is_cancelled() {
+            jobs.queued.fetch_sub(1, Ordering::SeqCst);
+            let slot = match permit {
+                Some(Ok(p)) => Some(p),
+                Some(Err(_)) => {
+                    *lock(&run.state) = State::Failed(ApiError::internal("the job slots closed"));
+                    return;
+                }
+                None => None,
+            };
+            if slot.is_none() || run.cancel.is_cancelled() {
                 let reason = lock(&run.cancel_reason).clone().unwrap_or_default();
                 *lock(&run.state) = State::Cancelled(reason);
                 return;

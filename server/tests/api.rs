@@ -546,3 +546,58 @@ async fn a_play_request_is_checked_and_its_job_can_be_cancelled() {
     // It stopped with less than one stroke's budget simulated: the player saw the flag.
     assert!(end["shots"].as_u64().unwrap() < most, "{end}");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_queued_job_cancelled_leaves_the_queue_at_once() {
+    // One slot, one place in the queue.
+    let app = router(Config {
+        limits: Limits {
+            heavy_jobs: 1,
+            queued_jobs: 1,
+            ..Limits::default()
+        },
+        recorder: None,
+    });
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    let running = v["id"].as_u64().unwrap();
+    loop {
+        let (_, v) = call(&app, "GET", &format!("/api/jobs/{running}"), None).await;
+        if v["state"] == "running" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    let queued = v["id"].as_u64().unwrap();
+    assert_eq!(v["state"], "queued", "{v}");
+    let (s, _) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+    assert_eq!(s, StatusCode::SERVICE_UNAVAILABLE);
+    // Cancelled while it waits: it says so at once (it was left "queued" until the running
+    // plan ended, up to the wall-time limit) ...
+    let (s, v) = call(&app, "POST", &format!("/api/jobs/{queued}/cancel"), None).await;
+    assert_eq!(s, StatusCode::OK);
+    assert_eq!(v["state"], "cancelled", "{v}");
+    assert_eq!(v["reason"], "cancelled on request", "{v}");
+    // ... and its place in the queue is free for another (it was refused with 503: "1 jobs
+    // are waiting already" while none was).
+    let mut accepted = None;
+    for _ in 0..200 {
+        let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
+        if s == StatusCode::ACCEPTED {
+            accepted = v["id"].as_u64();
+            break;
+        }
+        assert_eq!(s, StatusCode::SERVICE_UNAVAILABLE, "{v}");
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    let (_, v) = call(&app, "GET", &format!("/api/jobs/{running}"), None).await;
+    assert_eq!(v["state"], "running", "the first plan still runs: {v}");
+    let next = accepted.expect("the cancelled job's place in the queue was not freed");
+    for id in [running, next] {
+        call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
+        assert_eq!(wait(&app, id).await["state"], "cancelled");
+    }
+}
