@@ -275,7 +275,7 @@ pub fn run(checked: Checked, job: &Job) -> Result<Value, ApiError> {
             ..
         }) => return Err(ApiError::new(409, REQUEST, "", "cancelled")),
         Err(e) => {
-            return Err(ApiError::unfinished(FRAME, format!("{FRAME}: {e}")));
+            return Err(ApiError::unfinished(FRAME, e.to_string()));
         }
     };
     let (end, winner) = match game.end {

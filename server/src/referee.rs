@@ -37,7 +37,7 @@ pub fn stroke(frame: &Value, rate: f64, limits: &Limits) -> Result<StrokeView, A
     let verdict = file
         .frame
         .judge(&shot)
-        .map_err(|e| ApiError::unfinished(FRAME, format!("{FRAME}: {e}")))?;
+        .map_err(|e| ApiError::unfinished(FRAME, e.to_string()))?;
     let referee = serde_json::to_value(verdict.report::<ShotRecord>(None))
         .map_err(|e| ApiError::internal(e.to_string()))?;
     let next = match file.frame.next(&verdict) {

@@ -24,7 +24,7 @@ pub struct ShotView {
 /// Simulates `scene`; a valid scene that does not finish within the server's limits is 422.
 pub fn simulate(scene: &Scene, file: &str) -> Result<Shot, ApiError> {
     snooker_engine::simulate(&scene.setup, &scene.options)
-        .map_err(|e| ApiError::unfinished(file, format!("{file}: {e}")))
+        .map_err(|e| ApiError::unfinished(file, e.to_string()))
 }
 
 /// The view of `shot` of `scene`, paths at `rate` Hz (at most the limit's).

@@ -601,3 +601,29 @@ async fn a_queued_job_cancelled_leaves_the_queue_at_once() {
         assert_eq!(wait(&app, id).await["state"], "cancelled");
     }
 }
+
+#[tokio::test]
+async fn a_shot_that_cannot_finish_is_named_once_as_the_command_line_says() {
+    let app = router(Config {
+        limits: Limits {
+            sim_time: 0.5,
+            ..Limits::default()
+        },
+        recorder: None,
+    });
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": scene_json(CUT_30)})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::UNPROCESSABLE_ENTITY, "{v}");
+    // `snooker simulate` prints "FILE: " and the engine's error: the input named once (it was
+    // "scene: scene: balls were still moving ...").
+    let mut scene = snooker_scene::parse(CUT_30, "cut-30.toml").unwrap();
+    scene.options.max_time = 0.5;
+    let e = snooker_engine::simulate(&scene.setup, &scene.options).unwrap_err();
+    assert_eq!(v["reason"], e.to_string(), "{v}");
+    assert_eq!(v["message"], format!("scene: {e}"), "{v}");
+}
