@@ -41,7 +41,12 @@ impl ApiError {
     pub fn from_scene(status: u16, e: SceneError) -> ApiError {
         ApiError {
             status,
-            message: e.to_string(),
+            // With no input at fault (a job not found, the server busy), the reason alone.
+            message: if e.file.is_empty() && e.key.is_empty() {
+                e.reason.clone()
+            } else {
+                e.to_string()
+            },
             file: e.file,
             key: e.key,
             reason: e.reason,

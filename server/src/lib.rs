@@ -53,8 +53,9 @@ pub use record::Recorder;
 
 use axum::Json;
 use axum::Router;
+use axum::extract::rejection::PathRejection;
 use axum::extract::{DefaultBodyLimit, Path, Query, State};
-use axum::http::{HeaderValue, StatusCode, Uri, header};
+use axum::http::{HeaderValue, Method, StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use body::Body;
@@ -125,7 +126,8 @@ pub fn router(config: Config) -> Router {
         .route("/api/play", post(play))
         .route("/api/jobs/{id}", get(job))
         .route("/api/jobs/{id}/cancel", post(job_cancel))
-        .fallback(get(page))
+        .method_not_allowed_fallback(method_not_allowed)
+        .fallback(page)
         .layer(DefaultBodyLimit::max(config.limits.body_bytes))
         .with_state(lab)
 }
@@ -141,8 +143,33 @@ pub async fn serve(
         .await
 }
 
-async fn page(uri: Uri) -> Response {
-    assets::asset(uri.path())
+/// The page's files (GET); anything else that no route takes is an API error, as JSON.
+async fn page(method: Method, uri: Uri) -> Response {
+    let path = uri.path();
+    if path == "/api" || path.starts_with("/api/") {
+        return ApiError::not_found(format!("no endpoint {method} {path}")).into_response();
+    }
+    if method != Method::GET && method != Method::HEAD {
+        return method_not_allowed(method, uri).await;
+    }
+    assets::asset(path)
+}
+
+/// A route asked with a method it does not take: 405, as JSON.
+async fn method_not_allowed(method: Method, uri: Uri) -> Response {
+    ApiError::new(
+        405,
+        body::REQUEST,
+        "",
+        format!("{} does not take {method}", uri.path()),
+    )
+    .into_response()
+}
+
+/// A job's id from the path: a bad one is 400 naming `id`, as JSON.
+fn job_id(id: Result<Path<u64>, PathRejection>) -> Result<u64, ApiError> {
+    id.map(|Path(id)| id)
+        .map_err(|e| ApiError::bad(body::REQUEST, "id", e.body_text()))
 }
 
 /// `GET /api/info`.
@@ -196,9 +223,10 @@ struct LayoutQuery {
 
 async fn layout(
     State(lab): Shared,
-    Path(name): Path<String>,
+    name: Result<Path<String>, PathRejection>,
     query: Result<Query<LayoutQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<Position>, ApiError> {
+    let Path(name) = name.map_err(|e| ApiError::bad(body::REQUEST, "name", e.body_text()))?;
     let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
     let limits = lab.limits;
     lab.light(move || position::layout(&name, q.reds.unwrap_or(15), q.seed.unwrap_or(1), &limits))
@@ -407,9 +435,10 @@ struct JobQuery {
 
 async fn job(
     State(lab): Shared,
-    Path(id): Path<u64>,
+    id: Result<Path<u64>, PathRejection>,
     query: Result<Query<JobQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<JobStatus>, ApiError> {
+    let id = job_id(id)?;
     let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
     let job = lab
         .jobs
@@ -418,7 +447,11 @@ async fn job(
     Ok(Json(job.status_since(q.since)))
 }
 
-async fn job_cancel(State(lab): Shared, Path(id): Path<u64>) -> Result<Json<JobStatus>, ApiError> {
+async fn job_cancel(
+    State(lab): Shared,
+    id: Result<Path<u64>, PathRejection>,
+) -> Result<Json<JobStatus>, ApiError> {
+    let id = job_id(id)?;
     let job = lab
         .jobs
         .get(id)

@@ -627,3 +627,36 @@ async fn a_shot_that_cannot_finish_is_named_once_as_the_command_line_says() {
     assert_eq!(v["reason"], e.to_string(), "{v}");
     assert_eq!(v["message"], format!("scene: {e}"), "{v}");
 }
+
+#[tokio::test]
+async fn every_api_error_is_json_naming_what_is_wrong() {
+    let app = app();
+    let (s, raw_body) = raw(&app, "GET", "/api/jobs/abc", Vec::new()).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    let v: Value = serde_json::from_slice(&raw_body).expect("a JSON error, not text");
+    assert_eq!(
+        (v["file"].as_str(), v["key"].as_str()),
+        (Some("request"), Some("id")),
+        "{v}"
+    );
+    let (s, raw_body) = raw(&app, "POST", "/api/jobs/-1/cancel", Vec::new()).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    let v: Value = serde_json::from_slice(&raw_body).expect("a JSON error, not text");
+    assert_eq!(v["key"], "id", "{v}");
+    // No such endpoint, whatever the method.
+    for method in ["GET", "POST"] {
+        let (s, raw_body) = raw(&app, method, "/api/nope", Vec::new()).await;
+        assert_eq!(s, StatusCode::NOT_FOUND, "{method}");
+        let v: Value = serde_json::from_slice(&raw_body).expect("a JSON error, not text");
+        assert!(v["message"].as_str().unwrap().contains("/api/nope"), "{v}");
+    }
+    // An endpoint asked with the wrong method.
+    let (s, raw_body) = raw(&app, "GET", "/api/simulate", Vec::new()).await;
+    assert_eq!(s, StatusCode::METHOD_NOT_ALLOWED);
+    let v: Value = serde_json::from_slice(&raw_body).expect("a JSON error, not text");
+    assert!(v["message"].as_str().unwrap().contains("GET"), "{v}");
+    // With no input at fault the message is the reason (it began with ": ").
+    let (s, v) = call(&app, "GET", "/api/jobs/12345", None).await;
+    assert_eq!(s, StatusCode::NOT_FOUND);
+    assert_eq!(v["message"], "no job 12345", "{v}");
+}
