@@ -95,6 +95,12 @@ pub struct Table {
     pub dims: Option<SnookerDims>,
 }
 
+/// How far from the origin a ball may be placed on the open table, m, in x and in y: the
+/// cloth is endless, but far out a coordinate's rounding step nears the contact tolerance
+/// ([`crate::detect::TOUCH_TOL`]) and two touching balls' gap is lost (at 1e15 m the step is
+/// 0.125 m and an impact's normal speed comes out NaN). At 1 km the step is 1.1e-13 m.
+pub const OPEN_EXTENT: f64 = 1000.0;
+
 impl Table {
     /// The endless cloth.
     pub fn open() -> Table {
@@ -119,6 +125,14 @@ impl Table {
     /// `contact` is the centre's distance to a nose when touching it (R cos theta).
     pub fn placement_error(&self, pos: Vec3, contact: f64) -> Option<String> {
         if self.kind == TableKind::Open {
+            if pos.x.abs() > OPEN_EXTENT || pos.y.abs() > OPEN_EXTENT {
+                return Some(format!(
+                    "centre ({:.4}, {:.4}) m is beyond the open cloth's extent: a ball's centre \
+                     must lie within {OPEN_EXTENT} m of the origin in x and in y (further out, \
+                     positions are too coarse for the contacts to be resolved)",
+                    pos.x, pos.y
+                ));
+            }
             return None;
         }
         let tol = crate::detect::TOUCH_TOL;
