@@ -314,16 +314,19 @@ async fn simulate(
     .map(Json)
 }
 
-/// A file to download: its name and type.
-fn attachment(bytes: Vec<u8>, name: &str, kind: &'static str) -> Response {
+/// A file to download: the scene's name, the file's extension and its type.
+fn attachment(bytes: Vec<u8>, name: &str, ext: &str, kind: &'static str) -> Response {
     let mut r = bytes.into_response();
     let h = r.headers_mut();
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(kind));
-    let name: String = name
+    // A scene's name is free text of any length; the file's name keeps its first 100 safe
+    // characters (a longer header is refused by common HTTP clients).
+    let stem: String = name
         .chars()
         .filter(|c| c.is_ascii_alphanumeric() || "-_.".contains(*c))
+        .take(100)
         .collect();
-    if let Ok(v) = HeaderValue::from_str(&format!("attachment; filename=\"{name}\"")) {
+    if let Ok(v) = HeaderValue::from_str(&format!("attachment; filename=\"{stem}.{ext}\"")) {
         h.insert(header::CONTENT_DISPOSITION, v);
     }
     r
@@ -342,7 +345,8 @@ async fn download_scene(
         .await?;
     Ok(attachment(
         text.into_bytes(),
-        &format!("{name}.toml"),
+        &name,
+        "toml",
         "application/toml",
     ))
 }
@@ -363,7 +367,8 @@ async fn download_result(
         .await?;
     Ok(attachment(
         text.into_bytes(),
-        &format!("{name}.json"),
+        &name,
+        "json",
         "application/json",
     ))
 }
@@ -386,11 +391,7 @@ async fn download_recording(
             Ok((checked.scene.name.clone(), bytes))
         })
         .await?;
-    Ok(attachment(
-        bytes,
-        &format!("{name}.rrd"),
-        "application/octet-stream",
-    ))
+    Ok(attachment(bytes, &name, "rrd", "application/octet-stream"))
 }
 
 async fn plan(

@@ -686,3 +686,54 @@ async fn a_ball_far_out_on_the_open_table_is_bad_input() {
     assert_eq!(s, StatusCode::OK, "{v}");
     assert_eq!(v["result"]["events"][0]["kind"], "ball_ball", "{v}");
 }
+
+#[tokio::test]
+async fn a_body_not_sent_as_json_is_refused_so_other_sites_cannot_start_work() {
+    // A page of another origin may post text/plain or form data without asking the lab
+    // first; before, the lab read such a body as JSON and started the plan or the visit.
+    let app = app();
+    let body = json!({"frame": {}}).to_string();
+    for kind in [
+        None,
+        Some("text/plain"),
+        Some("application/x-www-form-urlencoded"),
+    ] {
+        let mut req = Request::builder().method("POST").uri("/api/play");
+        if let Some(k) = kind {
+            req = req.header("content-type", k);
+        }
+        let r = app
+            .clone()
+            .oneshot(req.body(Body::from(body.clone())).unwrap())
+            .await
+            .unwrap();
+        assert_eq!(r.status(), StatusCode::UNSUPPORTED_MEDIA_TYPE, "{kind:?}");
+        let bytes = r.into_body().collect().await.unwrap().to_bytes();
+        let v: Value = serde_json::from_slice(&bytes).expect("a JSON error");
+        assert!(
+            v["reason"].as_str().unwrap().contains("application/json"),
+            "{v}"
+        );
+    }
+}
+
+#[tokio::test]
+async fn a_long_scene_name_gives_a_short_file_name() {
+    // The name is free text; a 200,000-character one made a header HTTP clients refuse.
+    let app = app();
+    let mut scene = scene_json(CUT_30);
+    scene["name"] = json!("n".repeat(200_000));
+    let req = Request::builder()
+        .method("POST")
+        .uri("/api/download/scene")
+        .header("content-type", "application/json")
+        .body(Body::from(json!({"scene": scene}).to_string()))
+        .unwrap();
+    let r = app.clone().oneshot(req).await.unwrap();
+    assert_eq!(r.status(), StatusCode::OK);
+    let disposition = r.headers()["content-disposition"].to_str().unwrap();
+    assert_eq!(
+        disposition,
+        format!("attachment; filename=\"{}.toml\"", "n".repeat(100))
+    );
+}
