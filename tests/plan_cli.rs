@@ -259,6 +259,16 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
             format!("{ok} --cue-to 1,1 --bounds speed=0.3..40"),
             "--bounds",
         ),
+        // More samples than memory holds records for: refused, not a panic (capacity
+        // overflow) or an allocation the machine cannot make.
+        (
+            format!("{ok} --cue-to 1,1 --samples 18446744073709551615"),
+            "--samples",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --samples 1000000000"),
+            "--samples",
+        ),
     ] {
         let extra: Vec<&str> = extra.split_whitespace().collect();
         let args: Vec<&str> = base.iter().copied().chain(extra).collect();

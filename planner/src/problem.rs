@@ -255,6 +255,10 @@ impl Bounds {
     }
 }
 
+/// Most Monte Carlo samples a request may ask per shot ([`Request::samples`]): a pot
+/// probability to a few parts in ten thousand, and one record each held in memory at once.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
 /// A planning request, by name (as the command takes it).
 #[derive(Debug, Clone)]
 pub struct Request {
@@ -421,6 +425,12 @@ impl Problem {
         }
         if request.samples == 0 {
             return Err(bad(RequestField::Samples, "at least one sample"));
+        }
+        if request.samples > MAX_SAMPLES {
+            return Err(bad(
+                RequestField::Samples,
+                format!("at most {MAX_SAMPLES} samples, got {}", request.samples),
+            ));
         }
         request.bounds.check(&p)?;
         request.noise.check()?;
