@@ -406,6 +406,73 @@ fn bad_data_files_are_rejected_with_file_key_line_and_column() {
     );
 }
 
+/// Numbers that parse but lie beyond any measurement (a noise of 1e-300 m, a centre 1e300 m
+/// away, a sample 1e9 s after the strike, an observable's value of 1e300 or its sigma of
+/// 1e-300) are refused naming the file
+/// and the key or the line and column. They were accepted, and the residuals divided by the
+/// noise or sigma overflowed: the report said `null` (JSON for infinity) for its gaps,
+/// chi-squared and BIC.
+#[test]
+fn numbers_beyond_any_measurement_are_rejected_not_reported_as_null() {
+    let dir = temp_dir("beyond");
+    let scene = std::fs::read_to_string("scenes/one-cushion.toml").unwrap();
+    let scene_file = ("s.toml", scene.as_str());
+    let good = "scene = \"s.toml\"\ntracks = \"t.csv\"\nnoise = 0.0005\nfit = [\"strike.speed\"]\n";
+    let tracks = ("t.csv", "t,ball,x,y\n0.0,cue,0.5,0.4\n0.01,cue,0.52,0.4\n");
+    rejects(
+        &dir,
+        &good.replace("noise = 0.0005", "noise = 1e-300"),
+        &[scene_file, tracks],
+        &["d.toml", "noise", "1e-300"],
+    );
+    rejects(
+        &dir,
+        good,
+        &[scene_file, ("t.csv", "t,ball,x,y\n0.0,cue,1e300,0.4\n")],
+        &["t.csv", "line 2, column 9", "x (m)"],
+    );
+    rejects(
+        &dir,
+        good,
+        &[scene_file, ("t.csv", "t,ball,x,y\n0.0,cue,0.5,-1e155\n")],
+        &["t.csv", "line 2, column 13", "y (m)"],
+    );
+    // A sample long after the shot must have ended (`[sim] max_time`, an hour by default):
+    // the report's plot sampled the simulated paths every 5 ms up to it (3.2 TB for 1e9 s)
+    // and the process aborted after writing the JSON.
+    rejects(
+        &dir,
+        good,
+        &[
+            scene_file,
+            ("t.csv", "t,ball,x,y\n0.0,cue,0.5,0.4\n1e9,cue,0.5,0.4\n"),
+        ],
+        &["t.csv", "line 3, column 1", "max_time"],
+    );
+    let obs = |row: &str| format!("shot,ball,quantity,when,value,sigma\n{row}\n");
+    for (row, at) in [
+        (
+            ",cue,speed,after:ball_cushion#1,1e300,0.02",
+            "line 2, column 33",
+        ),
+        (
+            ",cue,heading,after:ball_cushion#1,1e200,1",
+            "line 2, column 35",
+        ),
+        (
+            ",cue,speed,after:ball_cushion#1,1.0,1e-300",
+            "line 2, column 37",
+        ),
+    ] {
+        rejects(
+            &dir,
+            "scene = \"s.toml\"\nobservables = \"o.csv\"\n",
+            &[scene_file, ("o.csv", &obs(row))],
+            &["o.csv", at],
+        );
+    }
+}
+
 #[test]
 fn bad_synth_requests_are_rejected_and_write_nothing() {
     let dir = temp_dir("bad-synth");

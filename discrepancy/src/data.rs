@@ -42,7 +42,40 @@ pub enum Quantity {
     SpinZ,
 }
 
+/// Smallest stated 1-sigma position noise, m: a micrometre, far below any camera's. Residuals
+/// are divided by it; a noise of 1e-300 m made them, and every gap and chi-squared, infinite.
+pub const MIN_NOISE: f64 = 1e-6;
+/// Stated noise at or above which a measurement is not one, m.
+pub const MAX_NOISE: f64 = 0.1;
+/// Farthest a tracked ball's centre may lie from the table's origin along x or y, m: the
+/// snooker table is 3.569 m by 1.778 m; a kilometre bounds any shot on the open cloth.
+pub const MAX_TRACK_COORD: f64 = 1e3;
+/// Smallest stated 1-sigma of an observable, in the quantity's own unit.
+pub const MIN_SIGMA: f64 = 1e-9;
+
 impl Quantity {
+    /// Largest magnitude a measured value of the quantity may have, in its unit: a ball's
+    /// speed (m/s) at most [`snooker_engine::sim::setup::MAX_BALL_SPEED`], a heading within a
+    /// turn either way (degrees), a spin about the vertical of surface speed
+    /// [`snooker_engine::sim::setup::MAX_SPIN_SPEED`] on the smallest ball (15 mm): 10^4 rad/s.
+    pub fn limit(self) -> f64 {
+        use snooker_engine::sim::setup::MAX_BALL_SPEED;
+        match self {
+            Quantity::Speed | Quantity::VelX | Quantity::VelY => MAX_BALL_SPEED,
+            Quantity::Heading => 360.0,
+            Quantity::SpinZ => 1e4,
+        }
+    }
+
+    /// The quantity's unit, as the data file's messages write it.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Quantity::Speed | Quantity::VelX | Quantity::VelY => "m/s",
+            Quantity::Heading => "degrees",
+            Quantity::SpinZ => "rad/s",
+        }
+    }
+
     /// Every quantity with its data-file name.
     pub const ALL: [(Quantity, &'static str); 5] = [
         (Quantity::Speed, "speed"),
@@ -277,14 +310,15 @@ pub enum DataError {
         /// Balls in the shot.
         balls: usize,
     },
-    /// A sample with a position that is not finite.
+    /// A sample with a position that is not finite or lies beyond [`MAX_TRACK_COORD`].
     SampleNotFinite {
         /// The shot.
         shot: String,
         /// The sample's time, s.
         t: f64,
     },
-    /// An observable of a missing ball, or without a finite value and a positive sigma.
+    /// An observable of a missing ball, or without a value within [`Quantity::limit`] and a
+    /// sigma of [`MIN_SIGMA`] or more.
     Observable {
         /// The shot.
         shot: String,
@@ -321,7 +355,10 @@ pub enum DataError {
 impl std::fmt::Display for DataError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            DataError::Noise(v) => write!(f, "noise must be a positive number of metres, got {v}"),
+            DataError::Noise(v) => write!(
+                f,
+                "noise must be a number of metres in [{MIN_NOISE:e}, {MAX_NOISE}), got {v:e}"
+            ),
             DataError::NoShots => write!(f, "the measurement has no shots"),
             DataError::NothingMeasured => {
                 write!(f, "the measurement has neither tracks nor observables")
@@ -336,7 +373,11 @@ impl std::fmt::Display for DataError {
                 "shot {shot}: a sample at t = {t} refers to ball {ball} of {balls}"
             ),
             DataError::SampleNotFinite { shot, t } => {
-                write!(f, "shot {shot}: a sample at t = {t} is not finite")
+                write!(
+                    f,
+                    "shot {shot}: a sample at t = {t} is not within {MAX_TRACK_COORD} m of the \
+                     table's origin"
+                )
             }
             DataError::Observable {
                 shot,
@@ -345,8 +386,8 @@ impl std::fmt::Display for DataError {
                 ball,
             } => write!(
                 f,
-                "shot {shot}: observable {quantity} {when} of ball {ball} needs a finite value \
-                 and a positive sigma"
+                "shot {shot}: observable {quantity} {when} of ball {ball} needs a value within its \
+                 limit and a sigma of at least {MIN_SIGMA:e}"
             ),
             DataError::NuisanceBall { shot, ball } => {
                 write!(f, "shot {shot}: fitted quantity refers to ball {ball}")
@@ -369,7 +410,7 @@ impl Measurement {
     /// observables referring to existing balls with finite values, and strikes and nuisances
     /// that make sense.
     pub fn validate(&self) -> Result<(), DataError> {
-        if !(self.noise.is_finite() && self.noise > 0.0) {
+        if !(MIN_NOISE..MAX_NOISE).contains(&self.noise) {
             return Err(DataError::Noise(self.noise));
         }
         if self.shots.is_empty() {
@@ -386,7 +427,7 @@ impl Measurement {
             let n = shot.setup.balls.len();
             let name = || shot.name.clone();
             for s in &shot.samples {
-                if s.ball >= n || !(s.t.is_finite() && s.t >= 0.0) {
+                if s.ball >= n || !(0.0..=snooker_scene::build::MAX_SIM_TIME).contains(&s.t) {
                     return Err(DataError::SampleBall {
                         shot: name(),
                         t: s.t,
@@ -394,7 +435,7 @@ impl Measurement {
                         balls: n,
                     });
                 }
-                if !s.pos.iter().all(|v| v.is_finite()) {
+                if !s.pos.iter().all(|v| v.abs() <= MAX_TRACK_COORD) {
                     return Err(DataError::SampleNotFinite {
                         shot: name(),
                         t: s.t,
@@ -402,7 +443,10 @@ impl Measurement {
                 }
             }
             for o in &shot.observables {
-                if o.ball >= n || !o.value.is_finite() || !(o.sigma.is_finite() && o.sigma > 0.0) {
+                if o.ball >= n
+                    || !(-o.quantity.limit()..=o.quantity.limit()).contains(&o.value)
+                    || !(o.sigma.is_finite() && o.sigma >= MIN_SIGMA)
+                {
                     return Err(DataError::Observable {
                         shot: name(),
                         quantity: o.quantity.name(),

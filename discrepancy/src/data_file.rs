@@ -5,6 +5,7 @@
 //!
 //! Also writes the files `snooker synth` makes.
 
+use crate::data::{MAX_NOISE, MAX_TRACK_COORD, MIN_NOISE, MIN_SIGMA};
 use crate::data::{MeasuredStrike, Moment, Quantity};
 use crate::data::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
@@ -134,6 +135,23 @@ fn number(
     }
 }
 
+/// A tracked coordinate: a finite number within [`MAX_TRACK_COORD`] of the table's origin.
+fn coordinate(file: &Path, line: usize, field: Field<'_>, what: &str) -> Result<f64, SceneError> {
+    let v = number(file, line, field, what)?;
+    if v.abs() > MAX_TRACK_COORD {
+        return Err(error(
+            file,
+            "",
+            format!(
+                "line {line}, column {}: {what} must lie within {MAX_TRACK_COORD} m of the \
+                 table's origin, got {v:e}",
+                field.0
+            ),
+        ));
+    }
+    Ok(v)
+}
+
 fn ball_index(
     file: &Path,
     line: usize,
@@ -153,8 +171,14 @@ fn ball_index(
     })
 }
 
-/// Reads a tracks CSV: `t,ball,x,y`, in time order.
-fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<TrackSample>, SceneError> {
+/// Reads a tracks CSV: `t,ball,x,y`, in time order, no later than `max_time` (the scene's
+/// `[sim] max_time`, by which its shot has ended).
+fn read_tracks(
+    path: &Path,
+    ids: &[String],
+    scene: &str,
+    max_time: f64,
+) -> Result<Vec<TrackSample>, SceneError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| error(path, "", format!("cannot read the tracks: {e}")))?;
     let mut out: Vec<TrackSample> = Vec::new();
@@ -165,6 +189,17 @@ fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<TrackSamp
                 path,
                 "",
                 format!("line {n}, column {}: t must be >= 0, got {t}", f[0].0),
+            ));
+        }
+        if t > max_time {
+            return Err(error(
+                path,
+                "",
+                format!(
+                    "line {n}, column {}: t = {t:e} s is after the scene {scene}'s max_time \
+                     ({max_time} s), by which its shot has ended",
+                    f[0].0
+                ),
             ));
         }
         if let Some(last) = out.last()
@@ -195,8 +230,8 @@ fn read_tracks(path: &Path, ids: &[String], scene: &str) -> Result<Vec<TrackSamp
                 ),
             ));
         }
-        let x = number(path, n, f[2], "x (m)")?;
-        let y = number(path, n, f[3], "y (m)")?;
+        let x = coordinate(path, n, f[2], "x (m)")?;
+        let y = coordinate(path, n, f[3], "y (m)")?;
         out.push(TrackSample {
             t,
             ball,
@@ -298,8 +333,21 @@ fn read_observables(path: &Path, shots: &[ShotData]) -> Result<Vec<Vec<Observabl
         let when = moment(f[3].1).map_err(|r| at(f[3].0, r))?;
         let value = number(path, n, f[4], "value")?;
         let sigma = number(path, n, f[5], "sigma")?;
-        if sigma <= 0.0 {
-            return Err(at(f[5].0, format!("sigma must be positive, got {sigma}")));
+        let (limit, unit) = (quantity.limit(), quantity.unit());
+        if value.abs() > limit {
+            return Err(at(
+                f[4].0,
+                format!(
+                    "a {} must lie within {limit} {unit} either way, got {value:e}",
+                    f[2].1
+                ),
+            ));
+        }
+        if sigma < MIN_SIGMA {
+            return Err(at(
+                f[5].0,
+                format!("sigma must be at least {MIN_SIGMA:e} {unit}, got {sigma:e}"),
+            ));
         }
         out[k].push(Observable {
             ball,
@@ -453,7 +501,8 @@ pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError
             shot.nuisances.push(nu);
         }
         if let Some(t) = &s.tracks {
-            shot.samples = read_tracks(&relative(dir, t), &ids, &scene.name)?;
+            shot.samples =
+                read_tracks(&relative(dir, t), &ids, &scene.name, scene.options.max_time)?;
             has_tracks = true;
         }
         if let Some(first) = shots.first() {
@@ -487,12 +536,12 @@ pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError
         }
     }
     let noise = match spec.noise {
-        Some(v) if v.is_finite() && v > 0.0 && v < 0.1 => v,
+        Some(v) if (MIN_NOISE..MAX_NOISE).contains(&v) => v,
         Some(v) => {
             return Err(error(
                 path,
                 "noise",
-                format!("must be a positive number of metres below 0.1, got {v}"),
+                format!("must be a number of metres in [{MIN_NOISE:e}, {MAX_NOISE}), got {v:e}"),
             ));
         }
         None if has_tracks => {
