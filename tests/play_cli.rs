@@ -184,6 +184,42 @@ fn bad_input_exits_2_with_one_message_and_writes_nothing() {
     assert!(!log.exists());
 }
 
+/// Any finite noise is played: a side error metres wide (`standard*10000`: 5 m) is pulled in
+/// to a strike the tip can make. The offset was pulled in by at most 400 steps of 1 % (to 2 %
+/// of it), so an error of more than about 0.7 m stopped the play with exit 1 and a message
+/// blaming the frame file's `cue.offset`.
+#[test]
+fn a_huge_but_finite_noise_is_played() {
+    let dir = temp_dir("play-loud");
+    let o = play(
+        &dir,
+        &[
+            "--noise",
+            "standard*10000",
+            "--max-strokes",
+            "1",
+            "--effort",
+            "50",
+            "--threads",
+            "1",
+        ],
+        "log.jsonl",
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let log = lines(&dir.join("log.jsonl"));
+    assert_eq!(log.len(), 1);
+    let offset = &log[0]["executed"]["offset"];
+    let miss = offset[0]
+        .as_f64()
+        .unwrap()
+        .hypot(offset[1].as_f64().unwrap());
+    assert!(
+        miss < 0.0362,
+        "the executed offset {offset} reaches the ball (R + tip)"
+    );
+}
+
 #[test]
 fn the_recording_opens_at_the_end_with_the_cue_balls_path_of_every_stroke() {
     use rerun::external::re_log_encoding::DecoderApp;

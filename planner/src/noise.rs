@@ -225,13 +225,33 @@ pub fn execute(intended: &Cue, errors: &StrikeErrors, ball: &BallState, p: &Para
     };
     // Pull the offset in by 1 % steps until the engine strikes it (at most a few dozen steps:
     // the errors are small beside the miscue limit; the centre always strikes).
+    let offset_refused =
+        |c: &Cue| matches!(snooker_engine::cue::strike(ball, c, p), Err(e) if e.key == "offset");
     for _ in 0..400 {
-        match snooker_engine::cue::strike(ball, &cue, p) {
-            Err(e) if e.key == "offset" => {
-                cue.offset = [0.99 * cue.offset[0], 0.99 * cue.offset[1]];
-            }
-            _ => break,
+        if !offset_refused(&cue) {
+            return cue;
         }
+        cue.offset = [0.99 * cue.offset[0], 0.99 * cue.offset[1]];
+    }
+    if offset_refused(&cue) {
+        // Still refused after 400 steps (to 2 % of the first offset): an error metres beyond
+        // the ball, or a tiny miscue limit. The largest share of this offset that strikes, by
+        // bisection (the centre, share 0, always strikes), so that any finite noise is played.
+        let full = cue.offset;
+        let at = |k: f64| Cue {
+            offset: [k * full[0], k * full[1]],
+            ..cue
+        };
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..64 {
+            let mid = 0.5 * (lo + hi);
+            if offset_refused(&at(mid)) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        cue = at(lo);
     }
     cue
 }
