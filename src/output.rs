@@ -12,13 +12,19 @@ pub enum OutputError {
     /// An output directory's path is a file.
     #[error("is a file, not a directory")]
     FileNotDirectory,
+    /// The path is a device, a pipe or a socket: an output replaces its file whole (a
+    /// temporary file renamed onto it), which would put a regular file in its place.
+    #[error(
+        "is not a regular file (a device, a pipe or a socket); name a file, or `-` where the option takes it for standard output"
+    )]
+    NotRegularFile,
     /// A file lies where a directory on the way should be.
     #[error("{} is not a directory", .0.display())]
     NotADirectory(std::path::PathBuf),
 }
 
-/// Checks, before any work, that `path` can become an output file: it is not a directory and
-/// nothing but directories lies on its way (missing directories are created when it is
+/// Checks, before any work, that `path` can become an output file: it is not a directory, a
+/// device, a pipe or a socket, and nothing but directories lies on its way (missing directories are created when it is
 /// written).
 pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     if path.is_dir() {
@@ -26,6 +32,10 @@ pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     }
     if path.file_name().is_none() {
         return Err(OutputError::NoFileName);
+    }
+    // `metadata` follows links, so a link to a file is a file (and `/dev/stdout` a device).
+    if path.exists() && !path.is_file() {
+        return Err(OutputError::NotRegularFile);
     }
     let first_existing = path
         .ancestors()

@@ -214,3 +214,30 @@ fn bad_arguments_exit_with_2_and_one_line() {
         assert!(err.starts_with("error: "), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn an_output_that_is_a_device_is_refused_before_any_work() {
+    // An output is written to a temporary file renamed onto its path: on /dev/null that
+    // replaced the device with a regular file when run as root, and failed after the
+    // simulation otherwise. It is refused up front, naming the option.
+    for (args, option) in [
+        (
+            &["simulate", "scenes/cut-30.toml", "--json", "/dev/null"][..],
+            "--json",
+        ),
+        (
+            &["simulate", "scenes/cut-30.toml", "--record", "/dev/null"],
+            "--record",
+        ),
+    ] {
+        let o = snooker(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(
+            err.contains(option) && err.contains("not a regular file"),
+            "{args:?}: {err}"
+        );
+    }
+    assert!(std::path::Path::new("/dev/null").exists());
+}
