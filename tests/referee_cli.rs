@@ -270,6 +270,76 @@ fn three_strokes_chain_through_frame_out_and_play_again_as_one_recorded_sequence
 }
 
 #[test]
+fn after_a_foul_a_sequence_takes_the_offender_playing_again_put_back_or_a_free_ball_declined() {
+    // WPBSA Section 3 Rule 3(b) and Rule 13 (play again), Rule 14 (put back after a miss),
+    // Rule 12 (a free ball may be declined, and is void when the offender plays again).
+    let dir = temp_dir("referee-again");
+    let p = |n: &str| dir.join(n);
+    let s = |p: &PathBuf| p.to_str().unwrap().to_string();
+    let first = format!("{FRAMES}/free_ball_awarded.toml");
+    ok(&["referee", &first, "--frame-out", &s(&p("n1.toml"))]);
+    let n1 = std::fs::read_to_string(p("n1.toml")).unwrap();
+    assert!(
+        n1.contains("to_play = 1") && n1.contains("free_ball = true"),
+        "{n1}"
+    );
+    let cue = "[cue]\nball = \"cue\"\nspeed = 1.0\naim = 1.5707963267948966\n";
+    let write = |name: &str, text: String| {
+        std::fs::write(p(name), text + cue).unwrap();
+        s(&p(name))
+    };
+    let declined = write(
+        "declined.toml",
+        n1.replace("free_ball = true", "free_ball = false"),
+    );
+    let again = write(
+        "again.toml",
+        n1.replace("to_play = 1", "to_play = 0")
+            .replace("free_ball = true", "free_ball = false"),
+    );
+    for next in [&declined, &again] {
+        let out = ok(&["referee", &first, next]);
+        assert_eq!(out.lines().filter(|l| l.starts_with("stroke ")).count(), 2);
+    }
+    let out = ok(&["referee", &first, &again]);
+    assert!(
+        out.contains("stroke 2 (") && out.contains("player 0 on pink"),
+        "{out}"
+    );
+    // After a miss, the balls put back: the frame before with the foul's points.
+    let text = std::fs::read_to_string(&first).unwrap();
+    assert!(text.contains("scores = [30, 30]"));
+    std::fs::write(
+        p("back.toml"),
+        text.replace("scores = [30, 30]", "scores = [30, 36]"),
+    )
+    .unwrap();
+    let out = ok(&["referee", &first, &s(&p("back.toml"))]);
+    assert!(
+        out.contains("stroke 2 (") && out.contains("player 0 on pink"),
+        "{out}"
+    );
+    // The offender playing again has no free ball.
+    let with_free = write(
+        "again_free.toml",
+        n1.replace("to_play = 1", "to_play = 0")
+            .replace("on = \"pink\"", "on = \"pink\"\nnominated = \"black\""),
+    );
+    let o = snooker(&["referee", &first, &with_free]);
+    assert_eq!(o.status.code(), Some(2));
+    // No play again after a legal stroke: the table goes to the other player.
+    let miss = format!("{FRAMES}/safety_miss.toml");
+    ok(&["referee", &miss, "--frame-out", &s(&p("m1.toml"))]);
+    let m1 = std::fs::read_to_string(p("m1.toml")).unwrap();
+    assert!(m1.contains("to_play = 1"), "{m1}");
+    let stay = write("stay.toml", m1.replace("to_play = 1", "to_play = 0"));
+    let o = snooker(&["referee", &miss, &stay]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("key `frame.to_play`"), "{err}");
+}
+
+#[test]
 fn a_stroke_that_ends_the_frame_writes_no_next_frame() {
     let dir = temp_dir("referee-over");
     let (out, next) = (dir.join("r.json"), dir.join("next.toml"));

@@ -7,9 +7,11 @@ use crate::frame::Frame;
 use snooker_engine::BallKind;
 
 impl Frame {
-    /// Checks that this frame is `expected` (the frame a stroke left, [`Frame::next`]) but for
-    /// the player's choices: the nomination, and the cue ball placed when in hand. Positions
-    /// must agree to the bit (a written frame reads back exactly); the name may differ.
+    /// Checks that this frame is `expected` (the frame a stroke left, [`Frame::next`], or
+    /// [`Frame::play_again`]) but for the player's choices: the nomination (nothing nominated
+    /// declines a free ball: `free_ball` false where the stroke left it true, WPBSA Section 3
+    /// Rule 12), and the cue ball placed when in hand. Positions must agree to the bit (a
+    /// written frame reads back exactly); the name may differ.
     pub fn follows(&self, expected: &Frame) -> Result<(), FrameError> {
         let differ =
             |key: Key, what: String| Err(FrameError::new(key, Problem::DoesNotFollow(what)));
@@ -44,10 +46,11 @@ impl Frame {
                 a.first_player.to_string(),
                 b.first_player.to_string(),
             ),
+            // A free ball may be declined (Section 3 Rule 12): false where it was awarded.
             (
                 "free_ball",
                 a.free_ball.to_string(),
-                b.free_ball.to_string(),
+                (b.free_ball && a.free_ball).to_string(),
             ),
         ];
         for (key, got, want) in fields {

@@ -1,10 +1,11 @@
 //! The referee's verdict on one stroke, and what follows from it: the next frame, or the end
 //! of the frame and its winner.
 
+use crate::colour::Colour;
 use crate::foul::Foul;
 use crate::frame::Frame;
 use crate::respot::Respot;
-use crate::state::{FrameState, Player};
+use crate::state::{FrameState, On, Player};
 use snooker_engine::Ball;
 
 /// The referee's verdict on a stroke.
@@ -79,5 +80,52 @@ impl Frame {
                 scores: verdict.scores,
             },
         }
+    }
+
+    /// The frame after a foul judged on this frame when the non-offender asks the offender to
+    /// play again (WPBSA Section 3 Rule 3(b), Rule 11, Rule 13): the table as the stroke left
+    /// it ([`Frame::next`]), the scores with the foul's points, the same ball on, the offender
+    /// at the table (from hand if the cue ball is in hand), and no free ball (Rule 12: if the
+    /// offender is asked to play again, the free ball call is void). `None` after a legal
+    /// stroke, and after a foul on the last black, which ends the frame or, with the scores
+    /// equal, starts the re-spotted black (Section 3 Rule 4), played by lot.
+    pub fn play_again(&self, verdict: &Verdict) -> Option<Frame> {
+        match verdict.next {
+            Some(next) if self.foul_goes_on(verdict) => {
+                let state = FrameState {
+                    to_play: self.state().to_play,
+                    nominated: None,
+                    free_ball: false,
+                    ..next
+                };
+                Some(self.with_parts(verdict.balls.clone(), state))
+            }
+            _ => None,
+        }
+    }
+
+    /// The frame before a foul judged on this frame, put back for the offender to play the
+    /// stroke again, as after a foul and a miss (WPBSA Section 3 Rule 14): the balls where
+    /// they were, the same ball on (after a red, a colour of the striker's choice again: no
+    /// nomination), the offender at the table, the scores with the foul's points. Whether the
+    /// foul was a miss is the referee's judgement, not a program's (docs/rules.md): the caller
+    /// decides. `None` where [`Frame::play_again`] is `None`.
+    pub fn put_back(&self, verdict: &Verdict) -> Option<Frame> {
+        self.foul_goes_on(verdict).then(|| {
+            let state = FrameState {
+                scores: verdict.scores,
+                nominated: None,
+                ..*self.state()
+            };
+            self.with_parts(self.balls().to_vec(), state)
+        })
+    }
+
+    /// A foul that leaves the frame going on with the same ball on: not on the last black
+    /// (which ends the frame, or with the scores equal starts the re-spotted black).
+    fn foul_goes_on(&self, verdict: &Verdict) -> bool {
+        verdict.foul.is_some()
+            && verdict.next.is_some()
+            && self.state().on != On::Closing(Colour::Black)
     }
 }

@@ -18,7 +18,9 @@ use std::process::ExitCode;
 pub struct Args {
     /// Frame file (a scene file with a `[frame]` table and its `[cue]` strike); with several,
     /// each is played after the one before and must be the frame that stroke left but for the
-    /// nomination and the cue ball placed in hand (the outputs are the last stroke's).
+    /// nomination (or a free ball declined) and the cue ball placed in hand, or after a foul
+    /// that frame with the offender asked to play again, or the frame before the foul put back
+    /// (a miss) with its points scored (the outputs are the last stroke's).
     #[arg(required = true, value_name = "FRAME.toml")]
     pub frames: Vec<PathBuf>,
     /// Write the referee's result (formats.md) as JSON to this file, or to standard output
@@ -154,7 +156,20 @@ pub fn run(args: Args) -> ExitCode {
                     ));
                 }
                 Next::Play(expected) => {
-                    if let Err(e) = file.frame.follows(&expected) {
+                    // After a foul the offender may be asked to play again from the position
+                    // left or, after a miss, put back (WPBSA Section 3 Rules 3(b), 13, 14):
+                    // those frames follow as well.
+                    let before = &prev.file.frame;
+                    let again = [
+                        before.play_again(&prev.verdict),
+                        before.put_back(&prev.verdict),
+                    ];
+                    if let Err(e) = file.frame.follows(&expected)
+                        && !again
+                            .iter()
+                            .flatten()
+                            .any(|a| file.frame.follows(a).is_ok())
+                    {
                         let mut e = file.locate(&e);
                         e.reason = format!("{} ({})", e.reason, prev.file.file);
                         return bad_input(e);
