@@ -512,3 +512,31 @@ fn bad_synth_requests_are_rejected_and_write_nothing() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("rolling resistance"));
 }
+
+#[test]
+fn a_heading_measured_a_turn_away_is_no_gap() {
+    // The one-cushion shot's cue ball leaves the cushion at -52.67 degrees; measured as
+    // 307.33 (the same heading), the fit's residual was the turn between them (0), but the
+    // report's observable gap and its worst observable took 360 degrees.
+    let dir = temp_dir("heading-turn");
+    std::fs::copy("scenes/one-cushion.toml", dir.join("s.toml")).unwrap();
+    let data = dir.join("d.toml");
+    std::fs::write(&data, "scene = \"s.toml\"\nobservables = \"o.csv\"\n").unwrap();
+    let gap = |measured: f64| {
+        std::fs::write(
+            dir.join("o.csv"),
+            format!("shot,ball,quantity,when,value,sigma\n,cue,heading,after:ball_cushion#1,{measured},1\n"),
+        )
+        .unwrap();
+        let out = dir.join("r.json");
+        let o = snooker(&["discrepancy", s(&data), "--json", s(&out), "-q"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        json(&out)["baseline_observable_gap"]["max"]
+            .as_f64()
+            .unwrap()
+    };
+    let near = gap(-52.6);
+    assert!(near > 0.05 && near < 0.1, "{near}");
+    let turned = gap(-52.6 + 360.0);
+    assert!((turned - near).abs() < 1e-9, "{turned} against {near}");
+}

@@ -93,6 +93,16 @@ impl Quantity {
             .map_or("", |e| e.1)
     }
 
+    /// Simulated less measured, in the quantity's unit; a heading's difference is the turn
+    /// between the two, within [-180, 180) degrees (307 degrees measured is -53 simulated).
+    pub fn difference(self, simulated: f64, measured: f64) -> f64 {
+        let d = simulated - measured;
+        match self {
+            Quantity::Heading => (d + 180.0).rem_euclid(360.0) - 180.0,
+            _ => d,
+        }
+    }
+
     /// The quantity's value for a ball state.
     pub fn of(self, s: &BallState) -> f64 {
         match self {

@@ -102,6 +102,10 @@ pub struct ObservableRow {
     pub simulated: Option<f64>,
     /// 1-sigma uncertainty.
     pub sigma: f64,
+    /// Simulated less measured ([`crate::data::Quantity::difference`]: a heading's is the
+    /// turn between them, within a half turn), the simulated value taken as 0 where the moment
+    /// never came, as the fit's residuals take it.
+    pub difference: f64,
     /// Normal approach speed of the event the moment refers to, m/s.
     pub event_speed: Option<f64>,
 }
@@ -356,6 +360,7 @@ pub fn observable_rows(m: &Measurement, sims: &[Shot]) -> Vec<ObservableRow> {
 
 fn observable_row(shot: &str, sim: &Shot, o: &Observable) -> ObservableRow {
     let (kind, n) = o.when.event();
+    let simulated = observed_state(sim, o).map(|s| o.quantity.of(&s));
     let event_speed = sim
         .events
         .iter()
@@ -368,8 +373,9 @@ fn observable_row(shot: &str, sim: &Shot, o: &Observable) -> ObservableRow {
         quantity: o.quantity.name(),
         when: o.when.to_string(),
         measured: o.value,
-        simulated: observed_state(sim, o).map(|s| o.quantity.of(&s)),
+        simulated,
         sigma: o.sigma,
+        difference: o.quantity.difference(simulated.unwrap_or(0.0), o.value),
         event_speed,
     }
 }

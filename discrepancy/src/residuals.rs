@@ -208,11 +208,7 @@ pub fn residuals(shot: &ShotData, sim: &Shot, noise: f64, window: f64, out: &mut
     }
     for o in &shot.observables {
         let v = observed_value(sim, o).unwrap_or(0.0);
-        let mut d = v - o.value;
-        if o.quantity == crate::data::Quantity::Heading {
-            d = (d + 180.0).rem_euclid(360.0) - 180.0;
-        }
-        out.push(d / o.sigma);
+        out.push(o.quantity.difference(v, o.value) / o.sigma);
     }
 }
 

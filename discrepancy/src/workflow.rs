@@ -219,7 +219,7 @@ impl Findings {
 fn observable_gap(m: &Measurement, sims: &[snooker_engine::Shot]) -> Gap {
     let d: Vec<f64> = crate::locate::observable_rows(m, sims)
         .iter()
-        .map(|o| (o.simulated.unwrap_or(0.0) - o.measured).abs())
+        .map(|o| o.difference.abs())
         .collect();
     if d.is_empty() {
         return Gap::default();
@@ -237,7 +237,7 @@ pub fn mean_relative_error(m: &Measurement, r: &FitResult) -> f64 {
     let errs: Vec<f64> = rows
         .iter()
         .filter(|o| o.measured != 0.0)
-        .map(|o| (o.simulated.unwrap_or(0.0) - o.measured).abs() / o.measured.abs())
+        .map(|o| o.difference.abs() / o.measured.abs())
         .collect();
     if errs.is_empty() {
         0.0
@@ -551,9 +551,7 @@ fn worst_observable(loc: &Location) -> Option<String> {
     loc.observables
         .iter()
         .max_by(|a, b| {
-            let r = |o: &crate::locate::ObservableRow| {
-                (o.simulated.unwrap_or(0.0) - o.measured).abs() / o.sigma
-            };
+            let r = |o: &crate::locate::ObservableRow| o.difference.abs() / o.sigma;
             r(a).total_cmp(&r(b))
         })
         .map(|o| {
