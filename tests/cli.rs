@@ -241,3 +241,31 @@ fn an_output_that_is_a_device_is_refused_before_any_work() {
     }
     assert!(std::path::Path::new("/dev/null").exists());
 }
+
+#[test]
+fn an_endless_input_is_refused_not_read_for_ever() {
+    // `/dev/zero` as the scene: every command read it until memory ran out.
+    for args in [
+        &["simulate", "/dev/zero"][..],
+        &["referee", "/dev/zero"],
+        &[
+            "plan",
+            "/dev/zero",
+            "--pot",
+            "red",
+            "--pocket",
+            "top-left",
+            "--cue-to",
+            "1,0",
+        ],
+    ] {
+        let o = snooker(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("/dev/zero") && err.contains("256 MiB"),
+            "{args:?}: {err}"
+        );
+    }
+}

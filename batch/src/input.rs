@@ -84,7 +84,7 @@ pub fn read(path: &Path) -> Result<Vec<Source>, InputError> {
         .extension()
         .is_some_and(|x| x == "jsonl" || x == "ndjson")
     {
-        from_json_lines(&std::fs::read_to_string(path).map_err(unreadable)?, &shown)
+        from_json_lines(&snooker_scene::read_text(path).map_err(unreadable)?, &shown)
     } else if path.exists() {
         return Err(InputError::Kind(shown));
     } else {

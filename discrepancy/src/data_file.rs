@@ -179,7 +179,7 @@ fn read_tracks(
     scene: &str,
     max_time: f64,
 ) -> Result<Vec<TrackSample>, SceneError> {
-    let text = std::fs::read_to_string(path)
+    let text = scene::read_text(path)
         .map_err(|e| error(path, "", format!("cannot read the tracks: {e}")))?;
     let mut out: Vec<TrackSample> = Vec::new();
     for (n, f) in csv_rows(&text, path, &["t", "ball", "x", "y"])? {
@@ -289,7 +289,7 @@ fn moment(s: &str) -> Result<Moment, String> {
 /// Reads an observables CSV into per-shot lists (shots by name, or the only shot when the
 /// column is empty).
 fn read_observables(path: &Path, shots: &[ShotData]) -> Result<Vec<Vec<Observable>>, SceneError> {
-    let text = std::fs::read_to_string(path)
+    let text = scene::read_text(path)
         .map_err(|e| error(path, "", format!("cannot read the observables: {e}")))?;
     let mut out = vec![Vec::new(); shots.len()];
     let header = ["shot", "ball", "quantity", "when", "value", "sigma"];
@@ -417,7 +417,7 @@ fn relative(dir: &Path, p: &str) -> PathBuf {
 /// Reads a data file and everything it names; `model`, if given, is a model file applied on
 /// top of the scenes' own model.
 pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError> {
-    let text = std::fs::read_to_string(path)
+    let text = scene::read_text(path)
         .map_err(|e| error(path, "", format!("cannot read the data file: {e}")))?;
     let file = path.display().to_string();
     let spec: DataFile = scene::from_toml(&text, &file)?;
@@ -556,7 +556,7 @@ pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError
     let first = &shots[0].setup;
     let (mut params, mut models): (Params, Models) = (first.params, first.models);
     if let Some(mp) = model {
-        let text = std::fs::read_to_string(mp)
+        let text = scene::read_text(mp)
             .map_err(|e| error(mp, "", format!("cannot read the model file: {e}")))?;
         (params, models) = scene::parse_model(&text, &mp.display().to_string(), params, models)?;
     }

@@ -85,7 +85,7 @@ fn locate(e: &FrameError, ball_keys: &[String], text: &str, file: &str) -> Scene
 /// Reads a frame file.
 pub fn load(path: &Path) -> Result<FrameFile, SceneError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
+    let text = snooker_scene::read_text(path)
         .map_err(|e| SceneError::new(&file, "", format!("cannot read the frame file: {e}")))?;
     parse(&text, &file)
 }

@@ -21,6 +21,7 @@ pub mod impact_report;
 pub mod json_input;
 pub mod model;
 pub mod params;
+pub mod read;
 pub mod result;
 pub mod toml_input;
 pub mod value_input;
@@ -31,6 +32,7 @@ pub use file::{BallSpec, CueSpec, SceneFile};
 pub use json_input::from_json;
 pub use model::parse_model;
 pub use params::{OverrideError, override_params};
+pub use read::read_text;
 pub use toml_input::{from_toml, key_position};
 pub use value_input::from_value;
 
@@ -74,7 +76,7 @@ pub struct Scene {
 /// Reads and validates a scene file.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
+    let text = read::read_text(path)
         .map_err(|e| SceneError::new(&file, "", format!("cannot read the scene file: {e}")))?;
     parse(&text, &file)
 }

@@ -179,7 +179,7 @@ fn parse_kinds(spec: &str) -> Result<Vec<ShotKind>, String> {
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let file = args.scene.display().to_string();
-    let text = match std::fs::read_to_string(&args.scene) {
+    let text = match snooker_scene::read_text(&args.scene) {
         Ok(t) => t,
         Err(e) => return bad_input(format!("{file}: cannot read the scene file: {e}")),
     };

@@ -226,7 +226,7 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
     );
     let scene_name = format!("{stem}.scene.toml");
     let tracks_name = format!("{stem}.csv");
-    let scene_text = std::fs::read_to_string(&req.scene)
+    let scene_text = snooker_scene::read_text(&req.scene)
         .with_context(|| format!("cannot read {}", req.scene.display()))?;
     let files = [
         (dir.join(&scene_name), scene_text),
