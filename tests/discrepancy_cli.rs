@@ -484,6 +484,9 @@ fn bad_synth_requests_are_rejected_and_write_nothing() {
         (vec!["--effect", "nap_drift=abc"], "not a finite number"),
         (vec!["--fps", "0"], "fps"),
         (vec!["--noise=-1"], "noise"),
+        // The data file would state a noise `snooker discrepancy` refuses.
+        (vec!["--noise", "0"], "--noise 0"),
+        (vec!["--noise", "0.0001"], "--noise 0.0001"),
         (vec!["--fit", "cue.colour"], "--fit cue.colour"),
         (vec!["--param", "mu_rol=0.01"], "unknown parameter"),
     ] {

@@ -52,6 +52,18 @@ pub struct Args {
 
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
+    // The data file states the noise, and `snooker discrepancy` weights the tracks by it:
+    // below its floor the file written could not be read back.
+    let floor = snooker_discrepancy::data::MIN_NOISE;
+    if args.noise.is_finite() && args.noise >= 0.0 && args.noise * 1e-3 < floor {
+        return bad_input(format!(
+            "--noise {}: below {} mm the data file could not be read by `snooker discrepancy` \
+             (it weights the tracks by the noise); use {} for tracks as good as exact",
+            args.noise,
+            floor * 1e3,
+            floor * 1e3
+        ));
+    }
     let camera = Camera {
         fps: args.fps,
         noise: args.noise * 1e-3,
