@@ -280,3 +280,35 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
         assert!(!out.exists(), "{args:?}");
     }
 }
+
+#[test]
+fn a_plan_whose_shots_cannot_finish_says_so() {
+    // Every shot is still moving at 0.2 s: the message blamed the lines alone.
+    let dir = temp_dir("plan-unfinished");
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}]\n\
+         [sim]\nmax_time = 0.2\n",
+    )
+    .unwrap();
+    let o = snooker(&[
+        "plan",
+        scene.to_str().unwrap(),
+        "--pot",
+        "red",
+        "--pocket",
+        "top-left",
+        "--cue-to",
+        "1.5,0.5",
+        "--samples",
+        "4",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("no strike")
+            && err.contains("could not finish within the scene's [sim] limits"),
+        "{err}"
+    );
+}

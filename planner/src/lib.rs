@@ -175,9 +175,17 @@ pub fn plan_problem(problem: &Problem, scene_name: &str) -> Result<Plan, PlanErr
     let req = &problem.request;
     let found = search::search(problem, req.alternatives + 1);
     if found.is_empty() {
+        // Shots that could not finish say more than "no line is open" when they are many.
+        let unfinished = match problem.unfinished() {
+            0 => String::new(),
+            n => format!(
+                "; {n} of the shots could not finish within the scene's [sim] limits \
+                 (max_time, max_events)"
+            ),
+        };
         return Err(PlanError::CannotPot(format!(
             "no strike within the bounds pots \"{}\" in {} without a foul ({} shots tried): \
-             no {} is open, or the cue ball cannot reach a contact that sends it there",
+             no {} is open, or the cue ball cannot reach a contact that sends it there{unfinished}",
             req.pot,
             req.pocket,
             problem.shots(),

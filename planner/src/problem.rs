@@ -331,6 +331,7 @@ pub struct Problem {
     /// For each ball, whether a plant may strike it first.
     plant_ok: Vec<bool>,
     shots: AtomicU64,
+    unfinished: AtomicU64,
     cancel: Cancel,
 }
 
@@ -457,6 +458,7 @@ impl Problem {
             target,
             plant_ok,
             shots: AtomicU64::new(0),
+            unfinished: AtomicU64::new(0),
             cancel: Cancel::new(),
         })
     }
@@ -518,6 +520,15 @@ impl Problem {
 
     pub(crate) fn count_shot(&self) {
         self.shots.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// Shots simulated so far that could not finish within the scene's `[sim]` limits.
+    pub fn unfinished(&self) -> u64 {
+        self.unfinished.load(Ordering::Relaxed)
+    }
+
+    pub(crate) fn count_unfinished(&self) {
+        self.unfinished.fetch_add(1, Ordering::Relaxed);
     }
 
     /// The problem watching `cancel`: once it is raised no further shot is simulated, and the

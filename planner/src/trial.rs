@@ -154,7 +154,11 @@ impl Problem {
         let mut setup = self.setup.clone();
         setup.balls[self.cue].strike(cue, &self.setup.params).ok()?;
         self.count_shot();
-        simulate(&setup, &self.options).ok()
+        let shot = simulate(&setup, &self.options).ok();
+        if shot.is_none() {
+            self.count_unfinished();
+        }
+        shot
     }
 
     /// What the shot of strike `cue` did, for `line`.
