@@ -33,6 +33,8 @@ pub struct Frame(pub RulesFrame);
 pub struct Verdict {
     verdict: V,
     shot: Py<Shot>,
+    /// The frame the stroke was judged on (the player's choices applied).
+    judged: RulesFrame,
 }
 
 /// A strike from a dict with the scene file's `[cue]` keys (speed, aim, offset, elevation).
@@ -300,6 +302,7 @@ impl Frame {
         let v = Verdict {
             verdict,
             shot: Py::new(py, Shot { scene, shot })?,
+            judged: frame,
         };
         PyTuple::new(
             py,
@@ -333,6 +336,20 @@ impl Frame {
 
 #[pymethods]
 impl Verdict {
+    /// After a foul, the frame with the offender asked to play again from the position left
+    /// (WPBSA Section 3 Rules 3(b) and 13; a free ball void, Rule 12); None after a legal
+    /// stroke or a foul on the last black.
+    fn play_again(&self) -> Option<Frame> {
+        self.judged.play_again(&self.verdict).map(Frame)
+    }
+
+    /// After a foul, the frame before the stroke put back for the offender to play again with
+    /// the foul's points scored (a foul and a miss, WPBSA Section 3 Rule 14: whether it was a
+    /// miss is the caller's call); None where `play_again` is None.
+    fn put_back(&self) -> Option<Frame> {
+        self.judged.put_back(&self.verdict).map(Frame)
+    }
+
     /// No foul.
     #[getter]
     fn legal(&self) -> bool {

@@ -87,6 +87,24 @@ def test_a_free_ball_nominated_must_be_hit_first_and_may_be_declined():
     assert verdict.legal and verdict.points == 1 and after.on == "colour"
 
 
+def test_after_a_foul_the_offender_may_play_again_or_the_balls_be_put_back():
+    path = ROOT / "rules" / "tests" / "frames" / "free_ball_red_first.toml"
+    f = snooker.frame(path)
+    verdict, after = f.play(strike_of(path))
+    assert not verdict.legal and after.to_play != f.to_play
+    # Played again by the offender from where the balls stopped, the free ball void.
+    again = verdict.play_again()
+    assert again.to_play == f.to_play and not again.free_ball
+    assert again.balls == after.balls and again.scores == verdict.scores
+    # Put back: the balls as before the stroke, the foul's points scored.
+    back = verdict.put_back()
+    assert back.to_play == f.to_play and back.balls == f.balls
+    assert back.scores == verdict.scores != f.scores
+    # A legal stroke leaves no such choice.
+    legal, _ = f.with_nomination(None).play(strike_of(path))
+    assert legal.legal and legal.play_again() is None and legal.put_back() is None
+
+
 def test_bad_frames_and_choices_raise_naming_the_key():
     with pytest.raises(ValueError, match=r"key `frame.scores`"):
         snooker.Frame.from_dict({"layout": "break-off", "frame": {"on": "red", "scores": [1]}})
