@@ -230,16 +230,20 @@ fn an_output_that_is_a_device_is_refused_before_any_work() {
             "--record",
         ),
     ] {
-        let o = snooker(args);
-        assert_eq!(o.status.code(), Some(2), "{args:?}");
-        let err = String::from_utf8(o.stderr).unwrap();
-        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-        assert!(
-            err.contains(option) && err.contains("not a regular file"),
-            "{args:?}: {err}"
-        );
+        refused(args, &[option, "not a regular file"]);
     }
     assert!(std::path::Path::new("/dev/null").exists());
+}
+
+/// `args` exit 2 with one line naming each of `needles`.
+fn refused(args: &[&str], needles: &[&str]) {
+    let o = snooker(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: {n:?} not in {err}");
+    }
 }
 
 #[test]
@@ -259,13 +263,6 @@ fn an_endless_input_is_refused_not_read_for_ever() {
             "1,0",
         ],
     ] {
-        let o = snooker(args);
-        assert_eq!(o.status.code(), Some(2), "{args:?}");
-        let err = String::from_utf8(o.stderr).unwrap();
-        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-        assert!(
-            err.contains("/dev/zero") && err.contains("256 MiB"),
-            "{args:?}: {err}"
-        );
+        refused(args, &["/dev/zero", "256 MiB"]);
     }
 }
