@@ -229,7 +229,7 @@ async fn layout(
     let Path(name) = name.map_err(|e| ApiError::bad(body::REQUEST, "name", e.body_text()))?;
     let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
     let limits = lab.limits;
-    lab.light(move || position::layout(&name, q.reds.unwrap_or(15), q.seed.unwrap_or(1), &limits))
+    lab.light(move || position::layout(&name, q.reds, q.seed, &limits))
         .await
         .map(Json)
 }

@@ -202,11 +202,28 @@ pub fn layouts() -> Vec<LayoutInfo> {
     out
 }
 
-/// The layout `name` (`reds` and `seed` for the open table).
-pub fn layout(name: &str, reds: usize, seed: u64, limits: &Limits) -> Result<Position, ApiError> {
+/// The layout `name` (`reds`, default 15, and `seed`, default 1, for the open table; the
+/// other layouts take neither, and naming one is refused rather than ignored).
+pub fn layout(
+    name: &str,
+    reds: Option<usize>,
+    seed: Option<u64>,
+    limits: &Limits,
+) -> Result<Position, ApiError> {
+    if name != "open-table" {
+        let given = [("reds", reds.is_some()), ("seed", seed.is_some())];
+        if let Some((key, _)) = given.iter().find(|(_, g)| *g) {
+            return Err(ApiError::bad(
+                crate::body::REQUEST,
+                key,
+                format!("only the open-table layout takes {key}, not \"{name}\""),
+            ));
+        }
+    }
     match name {
         "break-off" => of_frame(&Frame::break_off()),
         "open-table" => {
+            let reds = reds.unwrap_or(15);
             if reds > 15 {
                 return Err(ApiError::bad(
                     crate::body::REQUEST,
@@ -214,7 +231,7 @@ pub fn layout(name: &str, reds: usize, seed: u64, limits: &Limits) -> Result<Pos
                     format!("at most 15 reds, got {reds}"),
                 ));
             }
-            of_frame(&Frame::open_table(reds, seed))
+            of_frame(&Frame::open_table(reds, seed.unwrap_or(1)))
         }
         _ => match SCENES.iter().find(|(n, _, _)| *n == name) {
             Some((n, text, _)) => of_scene(&input::scene_toml(text, &format!("{n}.toml"), limits)?),

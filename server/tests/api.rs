@@ -662,6 +662,28 @@ async fn every_api_error_is_json_naming_what_is_wrong() {
 }
 
 #[tokio::test]
+async fn a_layout_refuses_options_it_does_not_take() {
+    let app = app();
+    // `reds` and `seed` shape the open table only; elsewhere they were silently ignored.
+    for (path, key) in [
+        ("/api/layouts/break-off?reds=3", "reds"),
+        ("/api/layouts/break-off-shot?seed=2", "seed"),
+    ] {
+        let (s, v) = call(&app, "GET", path, None).await;
+        assert_eq!(s, StatusCode::BAD_REQUEST, "{path}: {v}");
+        assert_eq!(v["key"], key, "{path}: {v}");
+    }
+    let (s, v) = call(&app, "GET", "/api/layouts/open-table?reds=16", None).await;
+    assert_eq!(
+        (s, &v["key"]),
+        (StatusCode::BAD_REQUEST, &json!("reds")),
+        "{v}"
+    );
+    let (s, _) = call(&app, "GET", "/api/layouts/open-table?reds=2&seed=9", None).await;
+    assert_eq!(s, StatusCode::OK);
+}
+
+#[tokio::test]
 async fn a_ball_far_out_on_the_open_table_is_bad_input() {
     // At 1e15 m a coordinate's step is 0.125 m: the impact of two touching balls came out
     // with a NaN normal speed, answered as a 422 "internal error" on a scene the server took.
