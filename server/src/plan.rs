@@ -16,6 +16,7 @@ use crate::shot::{self, ShotView};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use snooker_planner::{NoiseComponent, Plan, PlanError, Problem, Request, StrikeSpec};
+use snooker_scene::file::Numbers;
 use snooker_scene::{CueSpec, SceneFile};
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -30,8 +31,8 @@ pub struct PlanRequest {
     pub pot: String,
     /// The pocket.
     pub pocket: String,
-    /// Where the cue ball should stop (x, y), m.
-    pub target: [f64; 2],
+    /// Where the cue ball should stop (x, y), m: exactly two numbers, as a scene's `pos`.
+    pub target: Numbers<2>,
     /// The ball struck (default `cue`).
     #[serde(default)]
     pub cue_ball: Option<String>,
@@ -86,7 +87,7 @@ fn too_many(key: &str, what: &str, given: usize, most: usize) -> ApiError {
 pub fn check(req: PlanRequest, limits: &Limits) -> Result<Checked, ApiError> {
     let checked = input::scene(&req.scene, limits)?;
     let p = checked.scene.setup.params;
-    let mut request = Request::new(&req.pot, &req.pocket, req.target, &p);
+    let mut request = Request::new(&req.pot, &req.pocket, req.target.0, &p);
     if let Some(c) = req.cue_ball {
         request.cue_ball = c;
     }

@@ -172,6 +172,13 @@ async fn bad_input_is_400_with_the_command_lines_message() {
         (Some("request"), Some("pocket")),
         "{v}"
     );
+    // A target of three numbers: the key and the length, not serde_json's "trailing characters".
+    let plan = json!({"scene": scene_json(CUT_30), "pot": "red", "pocket": "middle-left", "target": [1.0, 0.5, 0.2]});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(plan)).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "target", "{v}");
+    let message = v["message"].as_str().unwrap();
+    assert!(message.contains("exactly 2 numbers"), "{message}");
     // Not JSON.
     let (s, _) = raw(&app, "POST", "/api/simulate", b"{\"scene\": ".to_vec()).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
