@@ -189,6 +189,29 @@ fn bad_scenes_are_rejected_with_file_key_and_reason() {
         "unknown layout",
     );
     rejects("dup", &format!("{BALL}{BALL}"), "balls[1].id", "used twice");
+    // A huge value is read back short: `{}` wrote 1e300 as 301 digits.
+    for (tag, scene, key, shown) in [
+        (
+            "huge-speed",
+            format!("{BALL}[cue]\nball = \"cue\"\nspeed = 1e300\naim = 0.0\n"),
+            "cue.speed",
+            "got 1e300",
+        ),
+        (
+            "far",
+            "[[balls]]\nid = \"cue\"\npos = [1e300, 0.5]\n".to_string(),
+            "balls[0].pos",
+            "centre (1.0000e300, 0.5000) m",
+        ),
+        (
+            "huge-param",
+            format!("{BALL}[params]\nmu_slide = -1e300\n"),
+            "params.mu_slide",
+            "got -1e300",
+        ),
+    ] {
+        rejects(tag, &scene, key, shown);
+    }
 }
 
 #[test]

@@ -10,6 +10,7 @@ use crate::data::{MeasuredStrike, Moment, Quantity};
 use crate::data::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
 use snooker_engine::motion::Transition;
+use snooker_engine::shown::Shown;
 use snooker_engine::{EventKind, Models, Params};
 use snooker_scene::{self as scene, Scene, SceneError};
 use std::path::{Path, PathBuf};
@@ -188,7 +189,11 @@ fn read_tracks(
             return Err(error(
                 path,
                 "",
-                format!("line {n}, column {}: t must be >= 0, got {t}", f[0].0),
+                format!(
+                    "line {n}, column {}: t must be >= 0, got {}",
+                    f[0].0,
+                    Shown(t)
+                ),
             ));
         }
         if t > max_time {

@@ -2,6 +2,7 @@
 
 use crate::catalogue::Effect;
 use crate::data::DataError;
+use snooker_engine::shown::Shown;
 use snooker_engine::{CueError, SimError};
 
 /// Why the discrepancy workflow (or one of its fits or films) stopped.
@@ -82,7 +83,7 @@ impl std::fmt::Display for DiscrepancyError {
                 setting,
                 range,
                 value,
-            } => write!(f, "{setting} must be {range}, got {value}"),
+            } => write!(f, "{setting} must be {range}, got {}", Shown(*value)),
         }
     }
 }

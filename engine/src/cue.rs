@@ -22,6 +22,7 @@
 use crate::ball::{Ball, BallState, INV_INERTIA_FACTOR, Vec3};
 use crate::motion;
 use crate::params::Params;
+use crate::shown::Shown;
 use crate::sim::setup::{MAX_BALL_SPEED, MAX_SPIN_SPEED};
 use serde::{Deserialize, Serialize};
 
@@ -129,14 +130,17 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
             "speed",
             format!(
                 "cue speed must lie in (0, {MAX_CUE_SPEED}] m/s, got {}",
-                cue.speed
+                Shown(cue.speed)
             ),
         ));
     }
     if cue.aim.abs() > MAX_AIM {
         return Err(err(
             "aim",
-            format!("a heading must lie in [-2 pi, 2 pi] rad, got {}", cue.aim),
+            format!(
+                "a heading must lie in [-2 pi, 2 pi] rad, got {}",
+                Shown(cue.aim)
+            ),
         ));
     }
     if !(0.0..=MAX_ELEVATION).contains(&cue.elevation) {
@@ -144,7 +148,8 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
             "elevation",
             format!(
                 "must lie in [0, {:.4}] rad (0 to 89 deg), got {}",
-                MAX_ELEVATION, cue.elevation
+                MAX_ELEVATION,
+                Shown(cue.elevation)
             ),
         ));
     }

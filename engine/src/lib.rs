@@ -54,6 +54,7 @@ pub mod impact;
 pub mod motion;
 pub mod params;
 pub mod rng;
+pub mod shown;
 pub mod sim;
 pub mod table;
 

@@ -8,6 +8,7 @@
 //! access by name and the range checks are all derived from that one declaration.
 
 use crate::ball::INV_INERTIA_FACTOR;
+use crate::shown::Shown;
 use serde::{Deserialize, Serialize};
 
 /// The cushion nose's height over the ball radius, h / R = 7/5 (thesis §6.2: the nose touches
@@ -393,7 +394,7 @@ impl Params {
                 };
                 return Err(ParamError {
                     name,
-                    reason: format!("must lie in {}{unit}, got {v}", info.range),
+                    reason: format!("must lie in {}{unit}, got {}", info.range, Shown(v)),
                 });
             }
         }

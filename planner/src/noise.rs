@@ -12,6 +12,7 @@ use rand::rngs::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use snooker_engine::cue::{Cue, MAX_CUE_SPEED, MAX_ELEVATION};
+use snooker_engine::shown::Shown;
 use snooker_engine::{BallState, Params};
 
 /// A component of the execution noise.
@@ -171,7 +172,11 @@ impl Noise {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(PlanError::BadInput {
                     field: RequestField::Noise(c),
-                    reason: format!("expected a finite number >= 0 ({}), got {v}", c.unit()),
+                    reason: format!(
+                        "expected a finite number >= 0 ({}), got {}",
+                        c.unit(),
+                        Shown(v)
+                    ),
                 });
             }
         }

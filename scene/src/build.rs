@@ -5,6 +5,7 @@
 use crate::file::SceneFile;
 use crate::{Scene, SceneError, StruckBall};
 use snooker_engine::cue::Cue;
+use snooker_engine::shown::Shown;
 use snooker_engine::table::layout;
 use snooker_engine::{
     Ball, BallKind, BallState, Motion, Params, Setup, SimOptions, SnookerDims, Table, TableKind,
@@ -44,7 +45,7 @@ fn table<X>(spec: &SceneFile<X>, r: f64, file: &str) -> Result<(Table, SnookerDi
             if !(0.0..=MAX_POCKET_SIZE).contains(&v) {
                 return Err(fail(
                     key,
-                    format!("must lie in [0, {MAX_POCKET_SIZE}] m, got {v}"),
+                    format!("must lie in [0, {MAX_POCKET_SIZE}] m, got {}", Shown(v)),
                 ));
             }
             *slot = v;
@@ -168,7 +169,10 @@ fn options<X>(spec: &SceneFile<X>, file: &str) -> Result<SimOptions, SceneError>
         } else {
             Err(fail(
                 key,
-                format!("must be a number of seconds in (0, {MAX_SIM_TIME}], got {v}"),
+                format!(
+                    "must be a number of seconds in (0, {MAX_SIM_TIME}], got {}",
+                    Shown(v)
+                ),
             ))
         }
     };

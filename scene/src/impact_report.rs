@@ -10,6 +10,7 @@ use snooker_engine::impact::cushion::mathavan as cush;
 use snooker_engine::impact::impulse::{ImpactError, Sample};
 use snooker_engine::impact::incoming;
 use snooker_engine::motion::{self, airborne};
+use snooker_engine::shown::Shown;
 use snooker_engine::sim::setup::MAX_SPIN_SPEED;
 use snooker_engine::{
     Ball, BallKind, BallState, Models, Motion, Params, Setup, SimError, SimOptions, Table, Vec3,
@@ -57,10 +58,10 @@ pub struct ImpactSpec {
 #[derive(Debug, thiserror::Error)]
 pub enum ImpactReportError {
     /// The incoming speed is outside (0, [`MAX_SPEED`]].
-    #[error("speed must lie in (0, {MAX_SPEED}] m/s, got {0}")]
+    #[error("speed must lie in (0, {MAX_SPEED}] m/s, got {}", Shown(*.0))]
     Speed(f64),
     /// A spin is outside [-[`MAX_SPIN`], [`MAX_SPIN`]].
-    #[error("{name} must lie in [-{MAX_SPIN}, {MAX_SPIN}] (units of V/R), got {value}")]
+    #[error("{name} must lie in [-{MAX_SPIN}, {MAX_SPIN}] (units of V/R), got {}", Shown(*.value))]
     Spin {
         /// `topspin` or `sidespin`.
         name: &'static str,
@@ -79,10 +80,10 @@ pub enum ImpactReportError {
         surface: f64,
     },
     /// The cut is outside (-89, 89) degrees.
-    #[error("cut must lie in (-89, 89) degrees, got {0}")]
+    #[error("cut must lie in (-89, 89) degrees, got {}", Shown(*.0))]
     Cut(f64),
     /// The angle is outside (0, 90] degrees.
-    #[error("angle must lie in (0, 90] degrees, got {0}")]
+    #[error("angle must lie in (0, 90] degrees, got {}", Shown(*.0))]
     Angle(f64),
     /// The impact solver failed.
     #[error("the impact: {0}")]

@@ -9,6 +9,7 @@ use crate::limits::Limits;
 use crate::paths::{self, Paths};
 use serde::Serialize;
 use snooker_engine::Shot;
+use snooker_engine::shown::Shown;
 use snooker_scene::Scene;
 use snooker_scene::result::{ShotRecord, result_record};
 
@@ -44,8 +45,9 @@ pub fn rate(rate: Option<f64>, limits: &Limits) -> Result<f64, ApiError> {
             crate::body::REQUEST,
             "rate",
             format!(
-                "the sample rate must lie in (0, {}] Hz, got {r}",
-                limits.path_rate
+                "the sample rate must lie in (0, {}] Hz, got {}",
+                limits.path_rate,
+                Shown(r)
             ),
         )),
     }

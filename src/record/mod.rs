@@ -18,6 +18,7 @@ use rerun::{
     TimeColumn, Transform3D, ViewCoordinates,
 };
 use sample::{Schedule, Side};
+use snooker_engine::shown::Shown;
 use snooker_engine::sim::{Track, orientation};
 use snooker_engine::{BallState, EventKind, Motion, Params, Shot, Vec3};
 use snooker_scene::Scene;
@@ -89,7 +90,7 @@ impl RecordOptions {
 #[derive(Debug, thiserror::Error)]
 pub enum RecordError {
     /// The sample rate is not a finite number in (0, [`MAX_RATE`]].
-    #[error("the sample rate must be a number of Hz in (0, {MAX_RATE}], got {0}")]
+    #[error("the sample rate must be a number of Hz in (0, {MAX_RATE}], got {}", Shown(*.0))]
     Rate(f64),
     /// The recording would be too large.
     #[error(

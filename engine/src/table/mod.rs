@@ -7,6 +7,7 @@ pub mod layout;
 pub mod snooker;
 
 use crate::ball::Vec3;
+use crate::shown::Shown;
 use serde::{Deserialize, Serialize};
 
 pub use snooker::SnookerDims;
@@ -130,7 +131,8 @@ impl Table {
                     "centre ({:.4}, {:.4}) m is beyond the open cloth's extent: a ball's centre \
                      must lie within {OPEN_EXTENT} m of the origin in x and in y (further out, \
                      positions are too coarse for the contacts to be resolved)",
-                    pos.x, pos.y
+                    Shown(pos.x),
+                    Shown(pos.y)
                 ));
             }
             return None;
@@ -145,7 +147,8 @@ impl Table {
                 "centre ({:.4}, {:.4}) m is off the cloth: a ball's centre must lie in \
                  [{lo_x:.4}, {hi_x:.4}] x [{lo_y:.4}, {hi_y:.4}] m (R cos(theta) from the cushion noses), \
                  or between a pocket's jaws short of its fall",
-                pos.x, pos.y
+                Shown(pos.x),
+                Shown(pos.y)
             ));
         }
         for jaw in &self.jaws {
