@@ -25,11 +25,15 @@ pub enum FoulReason {
     /// With a colour on, it was potted with another colour (Rule 10: two balls potted other
     /// than reds, or the free ball and a ball on).
     TwoColoursPotted,
+    /// After a free ball stroke, the cue ball is snookered on every ball on by the free ball
+    /// (Section 3 Rule 12(b)(ii); not when the pink and black are the only object balls). An
+    /// extension of the contract's list, last so that its reasons keep their order.
+    SnookeredByFreeBall,
 }
 
 impl FoulReason {
     /// Every reason, in the contract's order.
-    pub const ALL: [FoulReason; 7] = [
+    pub const ALL: [FoulReason; 8] = [
         FoulReason::NoBallHit,
         FoulReason::FirstHitNotOn,
         FoulReason::BallNotOnPotted,
@@ -37,6 +41,7 @@ impl FoulReason {
         FoulReason::OffTable,
         FoulReason::WrongColourPotted,
         FoulReason::TwoColoursPotted,
+        FoulReason::SnookeredByFreeBall,
     ];
 
     /// Its name in the referee's JSON.
@@ -49,6 +54,7 @@ impl FoulReason {
             FoulReason::OffTable => "off_table",
             FoulReason::WrongColourPotted => "wrong_colour_potted",
             FoulReason::TwoColoursPotted => "two_colours_potted",
+            FoulReason::SnookeredByFreeBall => "snookered_by_free_ball",
         }
     }
 }
@@ -106,7 +112,8 @@ mod tests {
                 "cue_ball_potted",
                 "off_table",
                 "wrong_colour_potted",
-                "two_colours_potted"
+                "two_colours_potted",
+                "snookered_by_free_ball"
             ]
         );
         assert!(FoulReason::ALL.windows(2).all(|w| w[0] < w[1]));

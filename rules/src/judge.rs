@@ -117,6 +117,10 @@ impl Frame {
                 FoulReason::TwoColoursPotted
             });
         }
+        let finals = shot.final_states();
+        if self.snookered_by_free_ball(&finals, cue) {
+            reasons.push(FoulReason::SnookeredByFreeBall);
+        }
         let foul = reasons.first().map(|&reason| Foul {
             reason,
             points: foul::value(
@@ -146,7 +150,6 @@ impl Frame {
         }
 
         // Where the balls are: at rest on the table, or out of play.
-        let finals = shot.final_states();
         let r = self.params().ball_radius;
         let in_play = |i: usize| finals[i].motion.in_play();
         // Colours back on their spots (Section 3 Rule 7): off the table always; potted in a
@@ -301,6 +304,52 @@ impl Frame {
             winner,
             balls: next_balls,
         })
+    }
+
+    /// True when a free ball stroke leaves the cue ball snookered on every ball on by the free
+    /// ball (WPBSA Section 3 Rule 12(b)(ii)), except with only the pink and black left as object
+    /// balls. "By the free ball": snookered with it where it lies, not snookered without it (a
+    /// ball that would snooker the cue ball anyway is not the free ball's doing). Judged on the
+    /// balls as they lie: a free ball potted is spotted by the rules, not left by the striker;
+    /// a cue ball potted or forced off is in hand; no ball on left on the table, nothing to be
+    /// snookered on.
+    fn snookered_by_free_ball(&self, finals: &[BallState], cue: usize) -> bool {
+        let Some(free) = self.free_ball_nominated() else {
+            return false;
+        };
+        let balls = self.balls();
+        let pink_and_black_only = balls
+            .iter()
+            .filter(|b| b.kind != BallKind::Cue)
+            .all(|b| matches!(b.kind, BallKind::Pink | BallKind::Black));
+        if pink_and_black_only || !finals[cue].motion.in_play() {
+            return false;
+        }
+        let (mut on, mut others, mut free_at) = (Vec::new(), Vec::new(), None);
+        for (i, b) in balls.iter().enumerate() {
+            if i == cue || !finals[i].motion.in_play() {
+                continue;
+            }
+            let pos = finals[i].pos;
+            if b.kind == free {
+                free_at = Some(others.len());
+                others.push(pos);
+            } else if self.is_on(b.kind) {
+                on.push(pos);
+            } else {
+                others.push(pos);
+            }
+        }
+        let Some(free_at) = free_at else {
+            return false;
+        };
+        if on.is_empty() {
+            return false;
+        }
+        let (c, r) = (finals[cue].pos, self.params().ball_radius);
+        let snookered = snookered::is_snookered(c, &on, &others, r);
+        others.remove(free_at);
+        snookered && !snookered::is_snookered(c, &on, &others, r)
     }
 
     /// True when the incoming player, on `on` with `balls` on the table, is snookered (WPBSA

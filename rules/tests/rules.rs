@@ -467,6 +467,33 @@ fn a_free_ball_potted_with_reds_on_counts_as_a_red_and_is_respotted() {
 }
 
 #[test]
+fn a_free_ball_that_snookers_the_ball_on_is_a_foul_but_for_pink_and_black() {
+    // Section 3 Rule 12(b)(ii): the blue, played as a red, left between the cue ball and
+    // every red. On the old referee this stroke was legal.
+    let (f, v) = play("free_ball_snookers");
+    assert_eq!(foul(&v), (FoulReason::SnookeredByFreeBall, 4));
+    assert_eq!(
+        v.foul.as_ref().unwrap().reasons,
+        [FoulReason::SnookeredByFreeBall]
+    );
+    assert_eq!((v.points, v.scores), (0, [4, 4]));
+    let n = next(&f, &v);
+    // The opponent comes in snookered by the same blue: a free ball again.
+    assert_eq!((n.state().to_play, n.state().on), (0, On::Red));
+    assert!(n.state().free_ball);
+    // The pink in front of the reds snookers the cue ball with or without the blue: not the
+    // free ball's doing, no foul.
+    let (f, v) = play("free_ball_snookers_not_its_doing");
+    assert!(v.legal(), "{:?}", v.foul);
+    // A legal stroke: the opponent comes in snookered, but a free ball follows fouls only.
+    assert!(!next(&f, &v).state().free_ball);
+    // With only the pink and black left the free ball may snooker.
+    let (_, v) = play("free_ball_snookers_pink_and_black");
+    assert!(v.legal(), "{:?}", v.foul);
+    assert_eq!((v.points, v.scores), (0, [40, 44]));
+}
+
+#[test]
 fn a_free_ball_in_the_closing_sequence_scores_the_ball_on_and_it_stays_on() {
     let (f, v) = play("free_ball_closing");
     assert_eq!((v.points, v.scores), (2, [20, 26]));
