@@ -3,9 +3,9 @@
 //! stroke). A stroke is simulated with the GIL released, then judged.
 
 use crate::{Shot, SimulationError, bad_scene};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::{PyBool, PyDict, PyMapping, PyString, PyTuple};
 use snooker_engine::Cue;
 use snooker_rules::{Colour, Frame as RulesFrame, FrameError, Next, Verdict as V};
 use snooker_scene::{Scene, StruckBall};
@@ -37,29 +37,52 @@ pub struct Verdict {
     judged: RulesFrame,
 }
 
-/// A strike from a dict with the scene file's `[cue]` keys (speed, aim, offset, elevation).
-fn strike(d: &Bound<'_, PyAny>) -> PyResult<Cue> {
-    let get = |k: &str| -> PyResult<Option<Bound<'_, PyAny>>> {
-        match d.get_item(k) {
-            Ok(v) => Ok(Some(v)),
-            Err(e) if e.is_instance_of::<pyo3::exceptions::PyKeyError>(d.py()) => Ok(None),
-            Err(e) => Err(e),
+/// The keys a strike dict may have: the scene file's `[cue]` keys.
+const STRIKE_KEYS: [&str; 5] = ["ball", "speed", "aim", "offset", "elevation"];
+
+/// A strike from a dict with the scene file's `[cue]` keys (speed, aim, offset, elevation;
+/// `ball`, if given, must name the frame's cue ball `cue_id`): any other key, a value that is
+/// not a number (a bool included) or a strike that is not a mapping is refused, naming it.
+fn strike(d: &Bound<'_, PyAny>, cue_id: &str) -> PyResult<Cue> {
+    let map = d.cast::<PyMapping>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "strike: a dict with the keys speed, aim, offset, elevation, not {}",
+            type_name(d)
+        ))
+    })?;
+    for key in map.keys()?.iter() {
+        let name = key.extract::<String>().unwrap_or_else(|_| key.to_string());
+        if !STRIKE_KEYS.contains(&name.as_str()) {
+            return Err(PyValueError::new_err(format!(
+                "strike: unknown key `{name}` (speed, aim, offset, elevation; or ball)"
+            )));
         }
+    }
+    if let Some(ball) = item(map, "ball")? {
+        let id = ball.extract::<String>().ok();
+        if id.as_deref() != Some(cue_id) {
+            return Err(PyValueError::new_err(format!(
+                "strike: `ball` is {}, not the cue ball \"{cue_id}\" (the strike is on the cue ball)",
+                ball.repr()?
+            )));
+        }
+    }
+    let offset = match item(map, "offset")? {
+        None => [0.0, 0.0],
+        Some(v) => match v.extract::<[Bound<'_, PyAny>; 2]>() {
+            Ok([side, height]) => [
+                number(&side, "offset[0]").map_err(|_| bad_offset())?,
+                number(&height, "offset[1]").map_err(|_| bad_offset())?,
+            ],
+            Err(_) => return Err(bad_offset()),
+        },
     };
     let num = |k: &str, default: Option<f64>| -> PyResult<f64> {
-        match (get(k)?, default) {
-            (Some(v), _) => v
-                .extract::<f64>()
-                .map_err(|_| PyValueError::new_err(format!("strike: `{k}` must be a number"))),
+        match (item(map, k)?, default) {
+            (Some(v), _) => number(&v, k),
             (None, Some(x)) => Ok(x),
             (None, None) => Err(PyValueError::new_err(format!("strike: `{k}` is missing"))),
         }
-    };
-    let offset = match get("offset")? {
-        None => [0.0, 0.0],
-        Some(v) => v.extract::<[f64; 2]>().map_err(|_| {
-            PyValueError::new_err("strike: `offset` must be two numbers [side, height]")
-        })?,
     };
     Ok(Cue {
         speed: num("speed", None)?,
@@ -67,6 +90,52 @@ fn strike(d: &Bound<'_, PyAny>) -> PyResult<Cue> {
         offset,
         elevation: num("elevation", Some(0.0))?,
     })
+}
+
+/// The value of `key` in a strike, or None when it is not there.
+fn item<'py>(map: &Bound<'py, PyMapping>, key: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
+    if map.contains(key)? {
+        map.get_item(key).map(Some)
+    } else {
+        Ok(None)
+    }
+}
+
+/// A strike's number (a Python or NumPy float or int; not a bool).
+fn number(v: &Bound<'_, PyAny>, key: &str) -> PyResult<f64> {
+    let not = || PyValueError::new_err(format!("strike: `{key}` must be a number"));
+    if v.is_instance_of::<PyBool>() || v.is_instance_of::<PyString>() {
+        return Err(not());
+    }
+    v.extract::<f64>().map_err(|_| not())
+}
+
+fn bad_offset() -> PyErr {
+    PyValueError::new_err("strike: `offset` must be two numbers [side, height]")
+}
+
+/// A Python object's type name, for messages.
+fn type_name(v: &Bound<'_, PyAny>) -> String {
+    v.get_type()
+        .name()
+        .map_or_else(|_| "that".into(), |n| n.to_string())
+}
+
+/// The id of `frame`'s cue ball ("cue" when it has none on the table).
+fn cue_id(frame: &RulesFrame) -> String {
+    frame
+        .cue_index()
+        .map_or("cue".to_string(), |i| frame.balls()[i].id.clone())
+}
+
+/// Checks `cue` as the engine would strike the cue ball with it (speed, aim, offset and
+/// elevation within the engine's limits), naming the `[cue]` key at fault.
+fn check_strike(frame: &RulesFrame, cue: &Cue) -> PyResult<()> {
+    let r = frame.params().ball_radius;
+    let ball = snooker_engine::BallState::at_rest(0.0, 0.0, r);
+    snooker_engine::cue::strike(&ball, cue, frame.params())
+        .map(|_| ())
+        .map_err(|e| PyValueError::new_err(format!("key `cue.{}`: {}", e.key, e.reason)))
 }
 
 #[pymethods]
@@ -262,7 +331,7 @@ impl Frame {
         nominated: Option<&str>,
         cue_ball: Option<[f64; 2]>,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let cue = self::strike(strike)?;
+        let cue = self::strike(strike, &cue_id(&self.0))?;
         let mut frame = self.0.clone();
         if let Some(p) = cue_ball {
             frame = frame.with_cue_ball_at(p).map_err(bad_frame)?;
@@ -313,10 +382,16 @@ impl Frame {
         )
     }
 
-    /// The frame file of this frame, with `strike` (a dict) as its `[cue]` if given.
+    /// The frame file of this frame, with `strike` (a dict) as its `[cue]` if given: a strike
+    /// the engine would refuse (as `play` does) is refused, so the file reads back.
     #[pyo3(signature = (strike=None))]
     fn to_toml(&self, strike: Option<&Bound<'_, PyAny>>) -> PyResult<String> {
-        let cue = strike.map(self::strike).transpose()?;
+        let cue = strike
+            .map(|s| self::strike(s, &cue_id(&self.0)))
+            .transpose()?;
+        if let Some(c) = &cue {
+            check_strike(&self.0, c)?;
+        }
         Ok(self.0.to_toml(cue.as_ref()))
     }
 

@@ -1,0 +1,68 @@
+"""Bad input through the Python API (the project's standard: one clear error naming the
+argument or key and the reason; never a panic, never a silent guess, never a file that does
+not read back)."""
+
+import math
+
+import pytest
+
+import snooker
+
+STRIKE = {"speed": 2.0, "aim": 0.0465}
+
+
+@pytest.mark.parametrize("key", ["spin", "sped", "offset_side"])
+def test_a_strike_with_an_unknown_key_is_refused_naming_it(key):
+    # Before: the key was ignored and the stroke played without it (a typo'd "elevation"
+    # played level).
+    frame = snooker.Frame.break_off()
+    with pytest.raises(ValueError, match=f"strike: unknown key `{key}`"):
+        frame.play({**STRIKE, key: 0.1})
+    with pytest.raises(ValueError, match=f"strike: unknown key `{key}`"):
+        frame.to_toml({**STRIKE, key: 0.1})
+
+
+def test_a_strike_on_a_ball_other_than_the_cue_ball_is_refused():
+    # Before: `ball` was ignored and the cue ball struck.
+    frame = snooker.Frame.break_off()
+    with pytest.raises(ValueError, match="strike: `ball` is 'red1', not the cue ball"):
+        frame.play({**STRIKE, "ball": "red1"})
+    # The cue ball itself, as a decision's strike.to_dict() names it, is welcome.
+    verdict, _ = frame.play({**STRIKE, "ball": "cue"})
+    assert verdict.shot.result.strike.ball == "cue"
+
+
+@pytest.mark.parametrize("strike", [None, [2.0, 0.0], "speed", 2.0])
+def test_a_strike_that_is_not_a_dict_is_refused_naming_it(strike):
+    # Before: "list indices must be integers or slices, not str" and the like.
+    with pytest.raises(TypeError, match="^strike: a dict"):
+        snooker.Frame.break_off().play(strike)
+
+
+@pytest.mark.parametrize("value", [True, "2.0", None])
+def test_a_strike_value_that_is_not_a_number_is_refused(value):
+    # Before: True played as 1 m/s.
+    with pytest.raises(ValueError, match="strike: `speed` must be a number"):
+        snooker.Frame.break_off().play({**STRIKE, "speed": value})
+
+
+@pytest.mark.parametrize("bad, key", [
+    ({"speed": math.nan}, "cue.speed"),
+    ({"speed": 1e300}, "cue.speed"),
+    ({"aim": math.inf}, "cue.aim"),
+    ({"offset": [0.1, 0.0]}, "cue.offset"),
+    ({"elevation": 2.0}, "cue.elevation"),
+])
+def test_to_toml_refuses_a_strike_play_refuses(bad, key):
+    # Before: the frame file was written with `speed = nan` (or 1e300), which no reader takes
+    # back ("key `cue.speed`: must be a finite number").
+    frame = snooker.Frame.break_off()
+    strike = {**STRIKE, **bad}
+    with pytest.raises(ValueError, match=f"key `{key}`"):
+        frame.play(strike)
+    with pytest.raises(ValueError, match=f"key `{key}`"):
+        frame.to_toml(strike)
+    # A good strike's file reads back with that strike.
+    text = frame.to_toml(STRIKE)
+    assert snooker.frame(text).scores == frame.scores
+    assert snooker.scene(text).ball_ids == list(frame.balls)
