@@ -4,9 +4,9 @@
 //! into NumPy arrays; errors carry the command line's messages.
 
 use pyo3::create_exception;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+use pyo3::types::{PyBool, PyBytes};
 use pythonize::Depythonizer;
 use snooker_engine::SimError;
 use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
@@ -86,6 +86,28 @@ fn parse_dict(source: &Bound<'_, PyAny>, file: &str) -> PyResult<Scene> {
     snooker_scene::parse_value(&mut Depythonizer::from_object(source), file)
         .map(|s| Scene(Arc::new(s)))
         .map_err(bad_scene)
+}
+
+/// A whole-number argument `name` in [0, `max`]: a Python or NumPy int (not a bool, not a
+/// float), refused naming the argument (TypeError for the type, ValueError for the range).
+pub(crate) fn whole(v: &Bound<'_, PyAny>, name: &str, max: u64) -> PyResult<u64> {
+    let py = v.py();
+    let index = py.import("operator")?.getattr("index")?;
+    let n = match index.call1((v,)) {
+        Ok(n) if !v.is_instance_of::<PyBool>() => n,
+        _ => {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: a whole number, not {}",
+                v.repr()?
+            )));
+        }
+    };
+    if n.lt(0)? || n.gt(max)? {
+        return Err(PyValueError::new_err(format!(
+            "{name}: must lie in [0, {max}], got {n}"
+        )));
+    }
+    n.extract::<u64>()
 }
 
 /// A typed value as Python objects (dicts, lists, numbers, strings), no JSON text between.

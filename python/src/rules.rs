@@ -184,12 +184,18 @@ impl Frame {
         Frame(RulesFrame::break_off())
     }
 
-    /// An open table: `reds` reds and the cue ball at random places (the same `seed`, the
-    /// same frame), the colours on their spots, reds on, player 0 to play.
+    /// An open table: `reds` reds (0 to 15) and the cue ball at random places (the same
+    /// `seed`, a whole number in [0, 2^64), the same frame), the colours on their spots, reds
+    /// on, player 0 to play. Other counts and seeds are refused (ValueError, TypeError).
     #[staticmethod]
-    #[pyo3(signature = (reds=15, seed=0))]
-    fn open_table(reds: usize, seed: u64) -> Frame {
-        Frame(RulesFrame::open_table(reds, seed))
+    #[pyo3(signature = (reds=None, seed=None), text_signature = "(reds=15, seed=0)")]
+    fn open_table(
+        reds: Option<&Bound<'_, PyAny>>,
+        seed: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Frame> {
+        let reds = reds.map_or(Ok(15), |r| crate::whole(r, "reds", 15))?;
+        let seed = seed.map_or(Ok(0), |s| crate::whole(s, "seed", u64::MAX))?;
+        Ok(Frame(RulesFrame::open_table(reds as usize, seed)))
     }
 
     /// The frame's name.

@@ -66,3 +66,31 @@ def test_to_toml_refuses_a_strike_play_refuses(bad, key):
     text = frame.to_toml(STRIKE)
     assert snooker.frame(text).scores == frame.scores
     assert snooker.scene(text).ball_ids == list(frame.balls)
+
+
+@pytest.mark.parametrize("reds", [16, 100, -1, 2**70])
+def test_open_table_refuses_a_count_of_reds_it_cannot_rack(reds):
+    # Before: 16 or 100 reds silently gave 15; -1 an OverflowError naming nothing.
+    with pytest.raises(ValueError, match=r"^reds: must lie in \[0, 15\]"):
+        snooker.Frame.open_table(reds)
+
+
+@pytest.mark.parametrize("seed", [-1, 2**64])
+def test_open_table_refuses_a_seed_out_of_range_naming_it(seed):
+    with pytest.raises(ValueError, match="^seed: must lie in"):
+        snooker.Frame.open_table(3, seed)
+
+
+@pytest.mark.parametrize("reds", [3.5, True, "3"])
+def test_open_table_refuses_a_count_that_is_not_a_whole_number(reds):
+    with pytest.raises(TypeError, match="^reds: a whole number"):
+        snooker.Frame.open_table(reds)
+
+
+def test_open_table_takes_whole_numbers_of_any_kind_and_keeps_its_defaults():
+    import numpy as np
+
+    assert snooker.Frame.open_table(np.int64(4), np.uint64(7)).balls == \
+        snooker.Frame.open_table(4, 7).balls
+    assert len(snooker.Frame.open_table().kinds) == 22
+    assert len(snooker.Frame.open_table(0).kinds) == 7
