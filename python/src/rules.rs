@@ -307,8 +307,15 @@ impl Frame {
     }
 
     /// The valid place for the cue ball in hand nearest `preferred` (x, y), or None.
-    fn nearest_placement(&self, preferred: [f64; 2]) -> Option<(f64, f64)> {
-        self.0.nearest_placement(preferred).map(|p| (p[0], p[1]))
+    /// A non-finite `preferred` is refused (ValueError).
+    fn nearest_placement(&self, preferred: [f64; 2]) -> PyResult<Option<(f64, f64)>> {
+        if !preferred.iter().all(|v| v.is_finite()) {
+            return Err(PyValueError::new_err(format!(
+                "preferred: must be two finite numbers (x, y), got ({}, {})",
+                preferred[0], preferred[1]
+            )));
+        }
+        Ok(self.0.nearest_placement(preferred).map(|p| (p[0], p[1])))
     }
 
     /// This frame with `nominated` (a colour's name, or None) nominated; None with a free

@@ -94,3 +94,10 @@ def test_open_table_takes_whole_numbers_of_any_kind_and_keeps_its_defaults():
         snooker.Frame.open_table(4, 7).balls
     assert len(snooker.Frame.open_table().kinds) == 22
     assert len(snooker.Frame.open_table(0).kinds) == 7
+
+
+@pytest.mark.parametrize("place", [(math.nan, 0.9), (0.7, math.inf), (-math.inf, math.nan)])
+def test_nearest_placement_refuses_a_place_that_is_not_finite(place):
+    # Before: any NaN gave the D's centre back as "the nearest place".
+    with pytest.raises(ValueError, match="^preferred: must be two finite numbers"):
+        snooker.Frame.break_off().nearest_placement(place)
