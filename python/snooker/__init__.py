@@ -288,9 +288,9 @@ def plan(
         float(tolerance),
         _noise(noise),
         {k: (float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()},
-        int(samples),
-        int(alternatives),
-        int(seed),
+        _whole(samples, "samples", 1),
+        _whole(alternatives, "alternatives", 0),
+        _whole(seed, "seed", 0),
         cue_ball,
     )
     return Plan.from_dict(doc)
@@ -322,12 +322,12 @@ def play(
     lines = _snooker.play(
         frame(source),
         _noise(noise),
-        int(seed),
-        int(effort),
+        _whole(seed, "seed", 0),
+        _whole(effort, "effort", 1),
         bool(visit),
         str(agent),
         str(opponent),
-        int(max_strokes),
+        _whole(max_strokes, "max_strokes", 1),
     )
     return [Stroke.from_dict(line) for line in lines]
 
@@ -346,7 +346,12 @@ def choose(
     planned. Its random draws come from (``seed``, ``stroke``): the same arguments, the same
     decision."""
     doc = _snooker.choose(
-        frame(source), _noise(noise), int(seed), int(stroke), int(effort), str(agent)
+        frame(source),
+        _noise(noise),
+        _whole(seed, "seed", 0),
+        _whole(stroke, "stroke", 0),
+        _whole(effort, "effort", 1),
+        str(agent),
     )
     return Decision.from_dict(doc)
 
@@ -363,6 +368,21 @@ def _noise(noise) -> dict:
     if float(noise) == 0.0:
         return {k: 0.0 for k in ("aim", "elevation", "speed", "side", "height")}
     raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+
+
+#: The largest unsigned 64-bit number: the ceiling of seeds and counts.
+_U64 = 2**64 - 1
+
+
+def _whole(value: Any, name: str, low: int, high: int = _U64) -> int:
+    """``value`` as an ``int`` in [``low``, ``high``]: a Python or NumPy int (not a bool, not a
+    float, which would be truncated silently), refused naming the argument: ``TypeError`` for
+    the type, ``ValueError`` for the range."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}: a whole number, not {value!r}")
+    if not low <= int(value) <= high:
+        raise ValueError(f"{name}: must lie in [{low}, {high}], got {int(value)}")
+    return int(value)
 
 
 def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> ImpactReport:

@@ -3,6 +3,7 @@ argument or key and the reason; never a panic, never a silent guess, never a fil
 not read back)."""
 
 import math
+import pathlib
 
 import pytest
 
@@ -101,3 +102,45 @@ def test_nearest_placement_refuses_a_place_that_is_not_finite(place):
     # Before: any NaN gave the D's centre back as "the nearest place".
     with pytest.raises(ValueError, match="^preferred: must be two finite numbers"):
         snooker.Frame.break_off().nearest_placement(place)
+
+
+CHAPTER7 = pathlib.Path(__file__).resolve().parents[2] / "scenes" / "chapter7-example.toml"
+
+
+def plan(**kw):
+    return snooker.plan(CHAPTER7, "red", "middle-left", (1.25, 0.0262), **{"samples": 8, **kw})
+
+
+@pytest.mark.parametrize("arg, value", [
+    ("samples", -1), ("alternatives", -1), ("seed", -1), ("seed", 2**64),
+])
+def test_plan_refuses_a_count_or_seed_out_of_range_naming_it(arg, value):
+    # Before: "OverflowError: can't convert negative int to unsigned", naming nothing.
+    with pytest.raises(ValueError, match=f"^{arg}: must lie in"):
+        plan(**{arg: value})
+
+
+@pytest.mark.parametrize("arg, value", [("samples", 2.5), ("seed", 1.5), ("alternatives", True)])
+def test_plan_refuses_a_count_or_seed_that_is_not_a_whole_number(arg, value):
+    # Before: 2.5 samples were 2, seed 1.5 was seed 1, without a word.
+    with pytest.raises(TypeError, match=f"^{arg}: a whole number"):
+        plan(**{arg: value})
+
+
+@pytest.mark.parametrize("call, arg, value, error", [
+    ("play", "seed", -1, ValueError), ("play", "effort", -5, ValueError),
+    ("play", "max_strokes", -1, ValueError), ("play", "effort", 1e3, TypeError),
+    ("choose", "seed", 2**64, ValueError), ("choose", "stroke", -1, ValueError),
+    ("choose", "effort", 0.5, TypeError),
+])
+def test_play_and_choose_refuse_bad_counts_and_seeds_naming_them(call, arg, value, error):
+    # Before: OverflowError naming nothing; effort=0.5 became 0 ("effort: must be at least 1").
+    with pytest.raises(error, match=f"^{arg}: "):
+        getattr(snooker, call)(snooker.Frame.open_table(2, 1), **{arg: value})
+
+
+def test_numpy_integers_are_whole_numbers():
+    import numpy as np
+
+    a, b = plan(seed=np.uint64(3), samples=np.int32(8)), plan(seed=3, samples=8)
+    assert a.best == b.best and a.alternatives == b.alternatives
