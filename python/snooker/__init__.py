@@ -228,17 +228,21 @@ def simulate_many(
     """Simulates many scenes on ``threads`` threads (all cores by default), the GIL released,
     the results in input order and bit-identical to one-by-one runs whatever the thread count.
 
-    Every scene is read first (a bad one raises ``ValueError`` naming its index before any is
+    ``threads`` is a whole number (a Python or NumPy int) of at least 1; no more threads than
+    scenes are started. Every scene is read first (a bad one raises ``ValueError`` naming its index before any is
     simulated). A scene the engine could not simulate raises its ``SimulationError`` with
     ``errors="raise"``; with ``errors="return"`` the error takes the shot's place in the list.
     """
     if errors not in ("raise", "return"):
         raise ValueError(f'errors: "raise" or "return", not {errors!r}')
-    if threads is not None and (not isinstance(threads, int) or threads < 1):
-        raise ValueError(f"threads: a positive number of threads, not {threads!r}")
+    if threads is not None:
+        threads = _whole(threads, "threads", 1)
     read = []
     for i, s in enumerate(scenes):
         read.append(scene(s, name=f"scenes[{i}]"))
+    if threads is not None:
+        # More threads than scenes would only idle, and starting many thousands takes minutes.
+        threads = min(threads, max(len(read), 1))
     out = []
     for r in _snooker.simulate_many(read, threads):
         if isinstance(r, SimulationError):

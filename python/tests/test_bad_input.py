@@ -144,3 +144,40 @@ def test_numpy_integers_are_whole_numbers():
 
     a, b = plan(seed=np.uint64(3), samples=np.int32(8)), plan(seed=3, samples=8)
     assert a.best == b.best and a.alternatives == b.alternatives
+
+
+SCENE = {"balls": [{"id": "cue", "pos": [1.0, 0.8]}, {"id": "red", "pos": [2.0, 0.9]}],
+         "cue": {"ball": "cue", "speed": 2.0, "aim": 0.1}}
+
+
+def test_simulate_many_takes_numpy_thread_counts():
+    # Before: "threads: a positive number of threads, not np.int64(2)".
+    import numpy as np
+
+    one = snooker.simulate(SCENE)
+    many = snooker.simulate_many([SCENE] * 3, threads=np.int64(2))
+    assert [(s.events, s.final) for s in many] == [(one.events, one.final)] * 3
+
+
+@pytest.mark.parametrize("threads, error", [
+    (0, ValueError), (-1, ValueError), (2**70, ValueError), (True, TypeError), (2.0, TypeError),
+])
+def test_simulate_many_refuses_a_bad_thread_count_naming_it(threads, error):
+    # Before: 2**70 raised a bare OverflowError, True ran on one thread.
+    with pytest.raises(error, match="^threads: "):
+        snooker.simulate_many([SCENE], threads=threads)
+
+
+def test_simulate_many_with_far_more_threads_than_scenes_returns_at_once():
+    # Before: threads=100_000 for two scenes started tens of thousands of threads and did not
+    # come back within minutes. Run apart, so that the old behaviour fails the test rather than
+    # hanging it.
+    import subprocess
+    import sys
+
+    code = ("import snooker; s = " + repr(SCENE) +
+            "; print(len(snooker.simulate_many([s, s], threads=100_000)))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "2"
