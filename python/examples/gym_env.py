@@ -54,7 +54,11 @@ class SnookerEnv(Base):
         return np.array([self.balls.get(i, (-1.0, -1.0)) for i in self.ids], np.float32)
 
     def reset(self, seed=None, options=None):
-        if seed is not None:
+        if gym is not None:
+            # Gymnasium's own seeding (env.np_random), as its env checker requires.
+            super().reset(seed=seed)
+            self.rng = self.np_random
+        elif seed is not None:
             self.rng = np.random.default_rng(seed)
         self.balls, self.shots = {}, 0
         for ball in self.ids:

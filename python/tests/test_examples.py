@@ -32,3 +32,30 @@ def test_random_play_keeps_the_observation_on_the_table():
         on = obs[obs[:, 0] >= 0]
         assert np.all(on[:, 0] <= 3.569) and np.all(on[:, 1] <= 1.778)
     assert env.shots <= 5
+
+
+def test_the_environment_passes_gymnasiums_checker_and_a_seed_repeats_an_episode():
+    # Before: check_env failed, "Expects the random number generator to have been generated
+    # given a seed was passed to reset" (reset seeded its own generator, not np_random).
+    import warnings
+
+    from gymnasium.utils.env_checker import check_env
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # its advice on the action's (physical) bounds
+        check_env(SnookerEnv(reds=2), skip_render_check=True)
+
+    def episode(seed):
+        env = SnookerEnv(reds=2, max_shots=3)
+        out = [env.reset(seed=seed)[0]]
+        env.action_space.seed(seed)
+        for _ in range(3):
+            obs, reward, terminated, truncated, _ = env.step(env.action_space.sample())
+            out.append((obs, reward))
+            if terminated or truncated:
+                break
+        return out
+
+    a, b = episode(7), episode(7)
+    assert np.array_equal(a[0], b[0])
+    assert all(np.array_equal(x[0], y[0]) and x[1] == y[1] for x, y in zip(a[1:], b[1:]))
