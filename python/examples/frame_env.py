@@ -117,8 +117,16 @@ class SnookerFrameEnv(gym.Env):
 
     @staticmethod
     def physical(action) -> np.ndarray:
-        """The action in its physical units (see the module's docs)."""
-        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
+        """The action in its physical units (see the module's docs): eight finite numbers,
+        clipped to [-1, 1]; any other shape, a NaN or an infinity raises ``ValueError`` (a
+        single number would otherwise be broadcast to all eight)."""
+        try:
+            a = np.asarray(action, dtype=np.float64)
+        except (TypeError, ValueError):
+            a = None
+        if a is None or a.shape != ACTION_LOW.shape or not np.all(np.isfinite(a)):
+            raise ValueError(f"action: {ACTION_LOW.size} finite numbers in [-1, 1], got {action!r}")
+        a = np.clip(a, -1.0, 1.0)
         return ACTION_LOW + (a + 1.0) / 2.0 * (ACTION_HIGH - ACTION_LOW)
 
     def step(self, action):

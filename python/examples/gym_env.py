@@ -35,6 +35,22 @@ ACTION_LOW = np.array([0.1, -math.pi, -0.0105, -0.0105, 0.0])
 ACTION_HIGH = np.array([8.0, math.pi, 0.0105, 0.0105, 1.2])
 
 
+def checked(action) -> np.ndarray:
+    """``action`` as an array of the action's shape, finite (it is then clipped to the bounds):
+    anything else raises ``ValueError`` (a single number would otherwise be broadcast to every
+    component, and a NaN has no place in the bounds)."""
+    try:
+        a = np.asarray(action, dtype=np.float64)
+    except (TypeError, ValueError):
+        a = None
+    if a is None or a.shape != ACTION_LOW.shape or not np.all(np.isfinite(a)):
+        raise ValueError(
+            f"action: {ACTION_LOW.size} finite numbers (speed, aim, side, height, elevation), "
+            f"got {action!r}"
+        )
+    return a
+
+
 class SnookerEnv(Base):
     """Pot the reds with the cue ball, one strike per step."""
 
@@ -70,7 +86,7 @@ class SnookerEnv(Base):
         return self._obs(), {}
 
     def step(self, action):
-        speed, aim, side, height, elevation = np.clip(action, ACTION_LOW, ACTION_HIGH)
+        speed, aim, side, height, elevation = np.clip(checked(action), ACTION_LOW, ACTION_HIGH)
         scene = {
             "balls": [{"id": b, "pos": list(p)} for b, p in self.balls.items()],
             "cue": {"ball": "cue", "speed": float(speed), "aim": float(aim),

@@ -6,6 +6,7 @@ import pathlib
 import sys
 
 import numpy as np
+import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
 from gym_env import SnookerEnv  # noqa: E402
@@ -59,3 +60,14 @@ def test_the_environment_passes_gymnasiums_checker_and_a_seed_repeats_an_episode
     a, b = episode(7), episode(7)
     assert np.array_equal(a[0], b[0])
     assert all(np.array_equal(x[0], y[0]) and x[1] == y[1] for x, y in zip(a[1:], b[1:]))
+
+
+@pytest.mark.parametrize("action", [[1.0], [1.0] * 6, [np.nan, 0, 0, 0, 0], [np.inf, 0, 0, 0, 0],
+                                    np.zeros((2, 5)), "abcde", None])
+def test_an_action_of_the_wrong_shape_or_not_finite_is_refused(action):
+    # Before: [1.0] was broadcast to all five components and played (speed 1, aim 1 rad, ...);
+    # a NaN came back as the scene's "key `cue.speed`", six numbers as a broadcasting error.
+    env = SnookerEnv(reds=1)
+    env.reset(seed=1)
+    with pytest.raises(ValueError, match="^action: 5 finite numbers"):
+        env.step(action)

@@ -160,3 +160,15 @@ def test_a_visit_ends_when_the_turn_passes():
         _, _, terminated, truncated, info = env.step(np.zeros(8))
         done = terminated or truncated
     assert env.frame.to_play != player or info["winner"] is not None
+
+
+@pytest.mark.parametrize("action", [[0.0], np.zeros(9), np.full(8, np.nan), np.full(8, np.inf),
+                                    np.zeros((2, 8)), "abcdefgh"])
+def test_the_frame_environment_refuses_an_action_of_the_wrong_shape_or_not_finite(action):
+    # Before: [0.0] was broadcast to all eight numbers and a stroke played; a NaN came back
+    # as "key `cue.speed`", a (2, 8) array as a TypeError from float().
+    env = SnookerFrameEnv(reds=3)
+    env.reset(seed=1)
+    with pytest.raises(ValueError, match="^action: 8 finite numbers"):
+        env.step(action)
+    assert env.strokes == 0
