@@ -308,11 +308,11 @@ impl Frame {
 
     /// True when a free ball stroke leaves the cue ball snookered on every ball on by the free
     /// ball (WPBSA Section 3 Rule 12(b)(ii)), except with only the pink and black left as object
-    /// balls. "By the free ball": snookered with it where it lies, not snookered without it (a
-    /// ball that would snooker the cue ball anyway is not the free ball's doing). Judged on the
-    /// balls as they lie: a free ball potted is spotted by the rules, not left by the striker;
-    /// a cue ball potted or forced off is in hand; no ball on left on the table, nothing to be
-    /// snookered on.
+    /// balls. "By the free ball": it is the effective snookering ball, the nearest of the balls
+    /// in the way to the cue ball, and with reds on the same for every red (`snookered::
+    /// effective_snookering`). Judged on the balls as they lie: a free ball potted is spotted by
+    /// the rules, not left by the striker; a cue ball potted or forced off is in hand; no ball
+    /// on left on the table, nothing to be snookered on.
     fn snookered_by_free_ball(&self, finals: &[BallState], cue: usize) -> bool {
         let Some(free) = self.free_ball_nominated() else {
             return false;
@@ -340,16 +340,10 @@ impl Frame {
                 others.push(pos);
             }
         }
-        let Some(free_at) = free_at else {
-            return false;
-        };
-        if on.is_empty() {
-            return false;
-        }
-        let (c, r) = (finals[cue].pos, self.params().ball_radius);
-        let snookered = snookered::is_snookered(c, &on, &others, r);
-        others.remove(free_at);
-        snookered && !snookered::is_snookered(c, &on, &others, r)
+        let r = self.params().ball_radius;
+        free_at.is_some_and(|k| {
+            snookered::effective_snookering(finals[cue].pos, &on, &others, r).contains(&k)
+        })
     }
 
     /// True when the incoming player, on `on` with `balls` on the table, is snookered (WPBSA

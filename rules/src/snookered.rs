@@ -1,7 +1,9 @@
 //! Snookered (WPBSA Section 2 Rule 17; Section 3 Rule 12 "Snookered after a Foul"): the cue
 //! ball is snookered when it cannot hit both extreme edges of any ball on in straight lines,
 //! only balls not on obstructing (cushions do not). With the cue ball in hand, only if that
-//! holds from every position in the D (Section 2 Rule 17).
+//! holds from every position in the D (Section 2 Rule 17). The effective snookering ball, the
+//! nearest in the way (none when reds are obstructed by different balls), decides whether a
+//! free ball snookers (Section 2 Rule 16(b), (c) in the older numbering; Section 3 Rule 12).
 //!
 //! Geometry: to hit an extreme edge of a ball on at O, the cue ball's centre runs from C along
 //! a tangent to the circle of radius 2R about O, to the tangent point T where it grazes the
@@ -51,6 +53,49 @@ pub fn both_edges_clear(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64
             .iter()
             .all(|o| segment_distance2(Vec3::new(o.x, o.y, 0.0), cue, t) >= limit)
     })
+}
+
+/// The indices of `obstacles` (centres) in the way of one extreme edge or the other of the ball
+/// at `target`, struck straight from `cue`.
+fn obstructing(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> Vec<usize> {
+    let Some(contacts) = edge_contacts(cue, target, radius) else {
+        return Vec::new();
+    };
+    let cue = Vec3::new(cue.x, cue.y, 0.0);
+    let limit = (2.0 * radius * (1.0 - TOUCH)).powi(2);
+    (0..obstacles.len())
+        .filter(|&k| {
+            let o = Vec3::new(obstacles[k].x, obstacles[k].y, 0.0);
+            contacts
+                .iter()
+                .any(|&t| segment_distance2(o, cue, t) < limit)
+        })
+        .collect()
+}
+
+/// The effective snookering balls (WPBSA Section 2 Rule 16(b), (c)), as indices of `not_on`:
+/// of the balls obstructing a ball on, the nearest to the cue ball (all of them when
+/// equidistant); when the balls on (reds) are obstructed by different nearest balls, none.
+/// Empty when the cue ball is not snookered.
+pub fn effective_snookering(cue: Vec3, on: &[Vec3], not_on: &[Vec3], radius: f64) -> Vec<usize> {
+    if on.is_empty() || !is_snookered(cue, on, not_on, radius) {
+        return Vec::new();
+    }
+    let dist = |k: usize| {
+        let (dx, dy) = (not_on[k].x - cue.x, not_on[k].y - cue.y);
+        dx.hypot(dy)
+    };
+    let nearest = |target: Vec3| -> Vec<usize> {
+        let by = obstructing(cue, target, not_on, radius);
+        let least = by.iter().map(|&k| dist(k)).fold(f64::INFINITY, f64::min);
+        by.into_iter().filter(|&k| dist(k) <= least).collect()
+    };
+    let mut common = nearest(on[0]);
+    for &o in &on[1..] {
+        let here = nearest(o);
+        common.retain(|k| here.contains(k));
+    }
+    common
 }
 
 /// True when the cue ball at `cue` is snookered: no ball of `on` can be hit on both extreme
@@ -112,5 +157,22 @@ mod tests {
         // Balls on never obstruct; a second red in the open does.
         assert!(!is_snookered(cue, &[red, v(1.5, 0.9)], &[], R));
         assert!(!is_snookered(cue, &[red, v(1.0, 0.3)], &[v(1.5, 0.9)], R));
+    }
+
+    #[test]
+    fn the_nearest_obstructing_ball_is_the_effective_snookering_ball() {
+        let (cue, red) = (v(1.0, 0.9), v(2.0, 0.9));
+        // Two balls in the line: the nearer snookers (Section 2 Rule 16(b)).
+        let balls = [v(1.7, 0.9), v(1.3, 0.9)];
+        assert_eq!(effective_snookering(cue, &[red], &balls, R), [1]);
+        // Not snookered: none.
+        assert!(effective_snookering(cue, &[red], &[v(1.5, 1.2)], R).is_empty());
+        // Two reds each behind its own ball: none (Rule 16(c)); behind the same one: that one.
+        let reds = [red, v(2.0, 1.4)];
+        let blockers = [v(1.5, 0.9), v(1.5, 1.15)];
+        assert!(effective_snookering(cue, &reds, &blockers, R).is_empty());
+        let close = [v(1.1, 0.95)];
+        let near_reds = [v(2.0, 0.95), v(2.0, 1.0)];
+        assert_eq!(effective_snookering(cue, &near_reds, &close, R), [0]);
     }
 }
