@@ -3,7 +3,7 @@
 //! only balls not on obstructing (cushions do not). With the cue ball in hand, only if that
 //! holds from every position in the D (Section 2 Rule 17). The effective snookering ball, the
 //! nearest in the way (none when reds are obstructed by different balls), decides whether a
-//! free ball snookers (Section 2 Rule 16(b), (c) in the older numbering; Section 3 Rule 12).
+//! free ball snookers (Section 2 Rule 17(b), (c); Section 3 Rule 12).
 //!
 //! Geometry: to hit an extreme edge of a ball on at O, the cue ball's centre runs from C along
 //! a tangent to the circle of radius 2R about O, to the tangent point T where it grazes the
@@ -73,7 +73,7 @@ fn obstructing(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> Vec<
         .collect()
 }
 
-/// The effective snookering balls (WPBSA Section 2 Rule 16(b), (c)), as indices of `not_on`:
+/// The effective snookering balls (WPBSA Section 2 Rule 17(b), (c)), as indices of `not_on`:
 /// of the balls obstructing a ball on, the nearest to the cue ball (all of them when
 /// equidistant); when the balls on (reds) are obstructed by different nearest balls, none.
 /// Empty when the cue ball is not snookered.
@@ -162,12 +162,12 @@ mod tests {
     #[test]
     fn the_nearest_obstructing_ball_is_the_effective_snookering_ball() {
         let (cue, red) = (v(1.0, 0.9), v(2.0, 0.9));
-        // Two balls in the line: the nearer snookers (Section 2 Rule 16(b)).
+        // Two balls in the line: the nearer snookers (Section 2 Rule 17(b)).
         let balls = [v(1.7, 0.9), v(1.3, 0.9)];
         assert_eq!(effective_snookering(cue, &[red], &balls, R), [1]);
         // Not snookered: none.
         assert!(effective_snookering(cue, &[red], &[v(1.5, 1.2)], R).is_empty());
-        // Two reds each behind its own ball: none (Rule 16(c)); behind the same one: that one.
+        // Two reds each behind its own ball: none (Rule 17(c)); behind the same one: that one.
         let reds = [red, v(2.0, 1.4)];
         let blockers = [v(1.5, 0.9), v(1.5, 1.15)];
         assert!(effective_snookering(cue, &reds, &blockers, R).is_empty());

@@ -482,11 +482,11 @@ fn a_free_ball_that_snookers_the_ball_on_is_a_foul_but_for_pink_and_black() {
     assert_eq!((n.state().to_play, n.state().on), (0, On::Red));
     assert!(n.state().free_ball);
     // The pink in front of the reds would snooker the cue ball without the blue too, but the
-    // blue is the nearer: the effective snookering ball (Section 2 Rule 16(b)).
+    // blue is the nearer: the effective snookering ball (Section 2 Rule 17(b)).
     let (_, v) = play("free_ball_snookers_before_the_pink");
     assert_eq!(foul(&v), (FoulReason::SnookeredByFreeBall, 4));
     // The brown beside the blue's path, nearer the cue ball: reds obstructed by different
-    // balls have no effective snookering ball (Rule 16(c)): no foul, and a legal stroke gives
+    // balls have no effective snookering ball (Rule 17(c)): no foul, and a legal stroke gives
     // the opponent no free ball.
     let (f, v) = play("free_ball_snookers_not_its_doing");
     assert!(v.legal(), "{:?}", v.foul);
