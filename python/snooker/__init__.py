@@ -283,15 +283,16 @@ def plan(
     ``cue_to``); a ball that cannot be potted raises ``CannotPot``.
     """
 
-    x, y = (float(c) for c in cue_to)
+    if bounds is not None and not isinstance(bounds, dict):
+        raise TypeError(f"bounds: a dict of (low, high) by variable, not {bounds!r}")
     doc = _snooker.plan(
         scene(source),
         pot,
         pocket,
-        [x, y],
-        float(tolerance),
+        _pair(cue_to, "cue_to"),
+        _number(tolerance, "tolerance"),
         _noise(noise),
-        {k: (float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()},
+        {str(k): tuple(_pair(v, f"bounds['{k}']")) for k, v in (bounds or {}).items()},
         _whole(samples, "samples", 1),
         _whole(alternatives, "alternatives", 0),
         _whole(seed, "seed", 0),
@@ -368,10 +369,33 @@ def _noise(noise) -> dict:
     if isinstance(noise, str):
         raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
     if isinstance(noise, dict):
-        return {str(k): float(v) for k, v in noise.items()}
+        return {str(k): _number(v, f"noise['{k}']") for k, v in noise.items()}
+    if isinstance(noise, (bool, np.bool_)) or not isinstance(noise, numbers.Real):
+        raise TypeError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
     if float(noise) == 0.0:
         return {k: 0.0 for k in ("aim", "elevation", "speed", "side", "height")}
     raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+
+
+def _number(value: Any, name: str) -> float:
+    """``value`` as a ``float``: a Python or NumPy int or float (not a bool, not a string,
+    which would be read silently as 1 or parsed), refused naming the argument with
+    ``TypeError``. Whether it is finite and within range is the extension's check."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}: a number, not {value!r}")
+    return float(value)
+
+
+def _pair(value: Any, name: str) -> List[float]:
+    """``value`` as two floats: a list, tuple or 1-D array of exactly two numbers, refused
+    naming the argument (``TypeError`` for the type, ``ValueError`` for the length)."""
+    if isinstance(value, np.ndarray) and value.ndim == 1:
+        value = value.tolist()
+    if not isinstance(value, (list, tuple)):
+        raise TypeError(f"{name}: two numbers (a list or tuple), not {value!r}")
+    if len(value) != 2:
+        raise ValueError(f"{name}: two numbers, got {len(value)}: {value!r}")
+    return [_number(v, f"{name}[{i}]") for i, v in enumerate(value)]
 
 
 #: The largest unsigned 64-bit number: the ceiling of seeds and counts.

@@ -181,3 +181,43 @@ def test_simulate_many_with_far_more_threads_than_scenes_returns_at_once():
                          timeout=60)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "2"
+
+
+@pytest.mark.parametrize("kw, error, message", [
+    ({"cue_to": (1.25, 0.0262, 0.0)}, ValueError, r"cue_to: two numbers, got 3"),
+    ({"cue_to": "xy"}, TypeError, r"cue_to: two numbers"),
+    ({"cue_to": (1.25, "y")}, TypeError, r"cue_to\[1\]: a number"),
+    ({"tolerance": "0.001"}, TypeError, r"tolerance: a number"),
+    ({"bounds": [1]}, TypeError, r"bounds: a dict"),
+    ({"bounds": {"speed": 1}}, TypeError, r"bounds\['speed'\]: two numbers"),
+    ({"bounds": {"speed": (0.3, 6.0, 9.0)}}, ValueError, r"bounds\['speed'\]: two numbers"),
+    ({"bounds": {"speed": (0.3, True)}}, TypeError, r"bounds\['speed'\]\[1\]: a number"),
+    ({"noise": {"aim": "x"}}, TypeError, r"noise\['aim'\]: a number"),
+    ({"noise": {"aim": True}}, TypeError, r"noise\['aim'\]: a number"),
+    ({"noise": [1]}, TypeError, r"noise: expected 'standard', 0 or a dict"),
+    ({"noise": False}, TypeError, r"noise: expected 'standard', 0 or a dict"),
+])
+def test_plan_refuses_a_malformed_argument_naming_it(kw, error, message):
+    # Before: "too many values to unpack", AttributeError "'list' object has no attribute
+    # 'items'", "could not convert string to float: 'x'" (naming no argument); True as a
+    # standard deviation of 1 rad and False as no noise at all.
+    args = {"cue_to": (1.25, 0.0262), **kw}
+    with pytest.raises(error, match="^" + message):
+        snooker.plan(CHAPTER7, "red", "middle-left", samples=8, **args)
+
+
+def test_plan_takes_numpy_pairs_and_numbers():
+    import numpy as np
+
+    a = plan(noise={"aim": np.float64(0.002)}, bounds={"speed": np.array([0.3, 6.0])},
+             tolerance=np.float32(0.001))
+    b = plan(noise={"aim": 0.002}, bounds={"speed": (0.3, 6.0)})
+    assert a.best == b.best
+
+
+def test_plan_takes_a_huge_finite_noise_as_the_command_line_does():
+    # `snooker plan --noise aim=1e300` is taken (any finite deviation >= 0 is played), so the
+    # Python API takes it too; nothing of the plan is NaN.
+    doc = plan(noise={"aim": 1e300}).to_dict()
+    assert "nan" not in repr(doc).lower()
+
