@@ -414,9 +414,18 @@ def _whole(value: Any, name: str, low: int, high: int = _U64) -> int:
 
 
 def _impact(native, speed, angle, topspin, sidespin, params: Optional[dict]) -> ImpactReport:
-    """Calls a native impact report with parameter overrides by name."""
-    overrides = {str(k): float(v) for k, v in (params or {}).items()}
-    doc = native(float(speed), float(angle), float(topspin), float(sidespin), overrides)
+    """Calls a native impact report with parameter overrides by name; ``angle`` is the
+    argument's (name, value), ``cut`` or ``angle``."""
+    if params is not None and not isinstance(params, dict):
+        raise TypeError(f"params: a dict of values by parameter name, not {params!r}")
+    overrides = {str(k): _number(v, f"params['{k}']") for k, v in (params or {}).items()}
+    doc = native(
+        _number(speed, "speed"),
+        _number(angle[1], angle[0]),
+        _number(topspin, "topspin"),
+        _number(sidespin, "sidespin"),
+        overrides,
+    )
     return ImpactReport.from_dict(doc)
 
 
@@ -432,7 +441,7 @@ def impact_ball_ball(
     (units of V/R; 1 = rolling) meets a resting object ball at ``cut`` degrees (0 = full
     ball). ``params`` overrides parameters by name (e.g. ``{"mu_ball": 0.06}``). Returns the
     report: each ball just after the impact and once its slip has ended, and the impulse."""
-    return _impact(_snooker.impact_ball_ball, speed, cut, topspin, sidespin, params)
+    return _impact(_snooker.impact_ball_ball, speed, ("cut", cut), topspin, sidespin, params)
 
 
 def impact_cushion(
@@ -446,4 +455,4 @@ def impact_cushion(
     at ``speed`` (m/s), ``angle`` degrees from the cushion line (90 = perpendicular), with
     ``topspin`` and ``sidespin`` (units of V/R). Returns the report (the ball after the impact
     and after its slip, its rebound angle, the impulse)."""
-    return _impact(_snooker.impact_cushion, speed, angle, topspin, sidespin, params)
+    return _impact(_snooker.impact_cushion, speed, ("angle", angle), topspin, sidespin, params)

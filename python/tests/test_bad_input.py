@@ -221,3 +221,20 @@ def test_plan_takes_a_huge_finite_noise_as_the_command_line_does():
     doc = plan(noise={"aim": 1e300}).to_dict()
     assert "nan" not in repr(doc).lower()
 
+
+@pytest.mark.parametrize("call, kw, error, message", [
+    ("impact_ball_ball", {"params": [1]}, TypeError, r"params: a dict"),
+    ("impact_cushion", {"params": "mu_ball=0.06"}, TypeError, r"params: a dict"),
+    ("impact_ball_ball", {"params": {"mu_ball": "x"}}, TypeError, r"params\['mu_ball'\]: a number"),
+    ("impact_ball_ball", {"speed": "x"}, TypeError, r"speed: a number"),
+    ("impact_cushion", {"speed": True}, TypeError, r"speed: a number"),
+    ("impact_ball_ball", {"cut": "10"}, TypeError, r"cut: a number"),
+    ("impact_cushion", {"angle": None}, TypeError, r"angle: a number"),
+    ("impact_cushion", {"topspin": [1.0]}, TypeError, r"topspin: a number"),
+    ("impact_ball_ball", {"sidespin": "1"}, TypeError, r"sidespin: a number"),
+])
+def test_impact_reports_refuse_a_malformed_argument_naming_it(call, kw, error, message):
+    # Before: AttributeError "'list' object has no attribute 'items'", "could not convert
+    # string to float: 'x'" naming no argument, True as 1 m/s.
+    with pytest.raises(error, match="^" + message):
+        getattr(snooker, call)(**{"speed": 1.0, **kw})
