@@ -203,8 +203,10 @@ class Shot:
 
     def positions(self, times: Iterable[float]) -> np.ndarray:
         """Every ball's position (m) at each time (s, within [0, duration]): an array of shape
-        (len(times), number of balls, 3), sampled from the exact trajectory."""
-        t = [float(x) for x in np.asarray(times, dtype=float).ravel()]
+        (len(times), number of balls, 3), sampled from the exact trajectory. ``times`` is one
+        number (the array's first axis then has length 1) or a 1-D sequence or array of
+        numbers; anything else (a 2-D array, a bool, a string) raises naming ``times``."""
+        t = _times(times)
         raw = self._native.positions(t)
         return np.frombuffer(raw, dtype=np.float64).reshape(len(t), len(self.ball_ids), 3)
 
@@ -213,6 +215,27 @@ class Shot:
             f"<Shot {self._native.scene_name!r}: {self._native.event_count} events, "
             f"{self.duration:.3f} s, pots {[p.ball for p in self.pots]}>"
         )
+
+
+def _times(times: Any) -> List[float]:
+    """``times`` as a list of floats: one number or a 1-D sequence of numbers, refused naming
+    the argument (``TypeError`` for the type, ``ValueError`` for the shape: a 2-D array is not
+    flattened, which would give positions at times the caller did not ask for in that order).
+    Whether each lies within the shot is the extension's check."""
+    try:
+        a = np.asarray(times)
+        bad_type = a.dtype == np.bool_ or not (
+            np.issubdtype(a.dtype, np.number) and not np.iscomplexobj(a)
+        )
+    except (TypeError, ValueError):
+        bad_type = True
+    if bad_type:
+        raise TypeError(f"times: a number or a 1-D sequence of numbers, not {times!r}")
+    if a.ndim > 1:
+        raise ValueError(
+            f"times: a number or a 1-D sequence of numbers, not an array of shape {a.shape}"
+        )
+    return [float(x) for x in a.astype(float).ravel()]
 
 
 def simulate(source: SceneLike) -> Shot:

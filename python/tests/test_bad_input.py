@@ -238,3 +238,36 @@ def test_impact_reports_refuse_a_malformed_argument_naming_it(call, kw, error, m
     # string to float: 'x'" naming no argument, True as 1 m/s.
     with pytest.raises(error, match="^" + message):
         getattr(snooker, call)(**{"speed": 1.0, **kw})
+
+
+@pytest.mark.parametrize("times, error", [
+    ([[0.0, 0.1]], ValueError), ([[0.0], [0.1]], ValueError),
+    ([True, False], TypeError), ("0.1", TypeError), ([0.0, "x"], TypeError), (None, TypeError),
+    ([[0.0, 0.1], [0.2]], TypeError),
+])
+def test_positions_refuses_times_that_are_not_one_number_or_a_1d_sequence(times, error):
+    # Before: a 2-D array of times was flattened silently (positions of shape (4, n, 3) for
+    # a (2, 2) array), True was 1 s, and a string said "could not convert string to float".
+    shot = snooker.simulate(SCENE)
+    with pytest.raises(error, match="^times: a number or a 1-D sequence"):
+        shot.positions(times)
+
+
+def test_positions_refuses_a_2d_array_of_times():
+    import numpy as np
+
+    shot = snooker.simulate(SCENE)
+    with pytest.raises(ValueError, match=r"^times: .* not an array of shape \(2, 2\)"):
+        shot.positions(np.full((2, 2), 0.1))
+
+
+def test_positions_takes_one_number_a_list_or_a_1d_array():
+    import numpy as np
+
+    shot = snooker.simulate(SCENE)
+    n = len(shot.ball_ids)
+    assert shot.positions(0.1).shape == (1, n, 3)
+    assert shot.positions(np.float32(0.1)).shape == (1, n, 3)
+    both = shot.positions(np.array([0.0, 0.1]))
+    assert both.shape == (2, n, 3)
+    assert (shot.positions([0, 0.1]) == both).all()
