@@ -7,7 +7,6 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyBytes};
-use pythonize::Depythonizer;
 use snooker_engine::SimError;
 use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
 use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
@@ -17,6 +16,7 @@ use std::sync::Arc;
 
 mod play;
 mod rules;
+mod strict;
 
 create_exception!(
     _snooker,
@@ -80,10 +80,11 @@ fn parse_json(text: &str, file: &str) -> PyResult<Scene> {
 }
 
 /// Reads a scene given as a dict with the scene file's keys (lists, numbers and strings as
-/// its values), checked by the scene crate as a file is: errors name the key.
+/// its values), checked by the scene crate as a file is: errors name the key (a bool where a
+/// number is expected is refused, as in a file).
 #[pyfunction]
 fn parse_dict(source: &Bound<'_, PyAny>, file: &str) -> PyResult<Scene> {
-    snooker_scene::parse_value(&mut Depythonizer::from_object(source), file)
+    snooker_scene::parse_value(strict::Strict(source.clone()), file)
         .map(|s| Scene(Arc::new(s)))
         .map_err(bad_scene)
 }

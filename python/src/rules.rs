@@ -172,7 +172,7 @@ impl Frame {
     #[staticmethod]
     #[pyo3(signature = (source, name="frame"))]
     fn from_dict(source: &Bound<'_, PyAny>, name: &str) -> PyResult<Frame> {
-        snooker_rules::from_value(&mut pythonize::Depythonizer::from_object(source), name)
+        snooker_rules::from_value(crate::strict::Strict(source.clone()), name)
             .map(|f| Frame(f.frame))
             .map_err(bad_scene)
     }

@@ -2,8 +2,10 @@
 argument or key and the reason; never a panic, never a silent guess, never a file that does
 not read back)."""
 
+import json
 import math
 import pathlib
+import re
 
 import pytest
 
@@ -271,3 +273,49 @@ def test_positions_takes_one_number_a_list_or_a_1d_array():
     both = shot.positions(np.array([0.0, 0.1]))
     assert both.shape == (2, n, 3)
     assert (shot.positions([0, 0.1]) == both).all()
+
+
+@pytest.mark.parametrize("path, value, key", [
+    (("cue", "speed"), True, "cue.speed"),
+    (("cue", "offset"), [0.0, True], "cue.offset[1]"),
+    (("balls", 0, "pos"), [False, 0.8], "balls[0].pos[0]"),
+    (("balls", 1, "vel"), [0.1, True, 0.0], "balls[1].vel[1]"),
+    (("params", "mu_roll"), True, "params.mu_roll"),
+    (("sim", "max_time"), True, "sim.max_time"),
+])
+def test_a_dict_scene_refuses_a_bool_where_a_number_goes_as_the_files_do(path, value, key):
+    # Before: {"cue": {"speed": True}} simulated at 1 m/s, where the TOML and JSON readers
+    # refuse `speed = true` ("invalid type: boolean `true`, expected f64" at its key).
+    import copy
+
+    d = copy.deepcopy({**SCENE, "params": {}, "sim": {}})
+    where = d
+    for k in path[:-1]:
+        where = where[k]
+    where[path[-1]] = value
+    reason = "invalid type: boolean `(true|false)`, expected f64"
+    with pytest.raises(ValueError, match=f"^scene: key `{re.escape(key)}`: {reason}"):
+        snooker.simulate(d)
+    # The same scene as JSON text is refused in the same words.
+    with pytest.raises(ValueError, match=f"key `{re.escape(key)}`: {reason}"):
+        snooker._snooker.parse_json(json.dumps(d), "scene")
+
+
+@pytest.mark.parametrize("key", ["to_play", "first_player"])
+def test_a_dict_frame_refuses_a_bool_for_a_number_and_takes_its_bools(key):
+    # Before: {"frame": {"to_play": True}} was player 1, where a frame file refuses it. The
+    # frame table's own bools (ball_in_hand, free_ball) stay welcome.
+    tomllib = pytest.importorskip("tomllib")
+    doc = tomllib.loads(snooker.Frame.break_off().to_toml(STRIKE))
+    doc["frame"]["ball_in_hand"] = False
+    doc["frame"][key] = True
+    with pytest.raises(ValueError, match=f"^frame: key `frame.{key}`: invalid type: boolean"):
+        snooker.frame(doc)
+    doc["frame"][key] = 1
+    assert snooker.frame(doc).ball_in_hand is False
+
+
+def test_a_dict_scene_refuses_a_pair_with_a_third_value():
+    # As before, and as in a file: a tuple too long is refused, not cut short.
+    with pytest.raises(ValueError, match=r"^scene: key `balls\[0\].pos`: invalid length 3"):
+        snooker.scene({"balls": [{"id": "cue", "pos": (1.0, 0.8, 0.0)}]})
