@@ -11,7 +11,7 @@ use snooker_engine::SimError;
 use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
 use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 mod play;
@@ -55,9 +55,21 @@ fn bad_scene(e: snooker_scene::SceneError) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
 
+/// Refuses an empty path, naming what file it should have named: the file readers would say
+/// ": cannot read the scene file", naming nothing.
+pub(crate) fn not_empty(path: &Path, what: &str) -> PyResult<()> {
+    if path.as_os_str().is_empty() {
+        return Err(PyValueError::new_err(format!(
+            "path: empty, not the path of a {what} file"
+        )));
+    }
+    Ok(())
+}
+
 /// Reads a scene file.
 #[pyfunction]
 fn load(path: PathBuf) -> PyResult<Scene> {
+    not_empty(&path, "scene")?;
     snooker_scene::load(&path)
         .map(|s| Scene(Arc::new(s)))
         .map_err(bad_scene)

@@ -144,6 +144,7 @@ impl Frame {
     /// part of the frame.
     #[staticmethod]
     fn load(path: PathBuf) -> PyResult<Frame> {
+        crate::not_empty(&path, "frame")?;
         snooker_rules::load(&path)
             .map(|f| Frame(f.frame))
             .map_err(bad_scene)

@@ -319,3 +319,13 @@ def test_a_dict_scene_refuses_a_pair_with_a_third_value():
     # As before, and as in a file: a tuple too long is refused, not cut short.
     with pytest.raises(ValueError, match=r"^scene: key `balls\[0\].pos`: invalid length 3"):
         snooker.scene({"balls": [{"id": "cue", "pos": (1.0, 0.8, 0.0)}]})
+
+
+@pytest.mark.parametrize("read, what", [
+    (snooker.simulate, "scene"), (snooker.scene, "scene"), (snooker.frame, "frame"),
+    (snooker.Frame.load, "frame"),
+])
+def test_an_empty_path_is_refused_as_empty(read, what):
+    # Before: ": cannot read the scene file: No such file or directory", naming nothing.
+    with pytest.raises(ValueError, match=f"^path: empty, not the path of a {what} file"):
+        read("")
