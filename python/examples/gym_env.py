@@ -4,7 +4,8 @@ Observation: every ball's (x, y) on the table (m; a pocketed ball at (-1, -1)), 
 array of shape (balls, 2). Action: the strike, [speed m/s, aim rad, side offset m, height
 offset m, elevation rad]. Reward: +1 per object ball potted, -1 if the cue ball is potted
 (it is then respotted on the brown spot). An episode is `max_shots` shots from a random
-position of `reds` reds; it ends early when every red is down.
+position of `reds` reds (0 to 15); it ends early when every red is down. A step before the
+first `reset` raises `ResetNeeded` (Gymnasium's; `RuntimeError` without Gymnasium).
 
 Runs with or without gymnasium installed (with it, the class is a `gymnasium.Env` with its
 spaces). Try it: `python examples/gym_env.py` plays random strikes.
@@ -13,6 +14,7 @@ spaces). Try it: `python examples/gym_env.py` plays random strikes.
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
@@ -23,9 +25,12 @@ try:  # Gymnasium is optional: the environment follows its API either way.
     from gymnasium import spaces
 
     Base = gym.Env
+    #: Raised by a step before the first reset, as Gymnasium's own wrappers raise it.
+    ResetNeeded = gym.error.ResetNeeded
 except ImportError:  # pragma: no cover
     gym = spaces = None
     Base = object
+    ResetNeeded = RuntimeError
 
 LENGTH, WIDTH, R = 3.569, 1.778, 0.02625
 BROWN_SPOT = (0.737, 0.889)
@@ -51,13 +56,26 @@ def checked(action) -> np.ndarray:
     return a
 
 
+def whole(value, name: str, low: int, high: int) -> int:
+    """``value`` as an ``int`` in [``low``, ``high``]: a Python or NumPy int (not a bool, not a
+    float), refused naming the argument (``TypeError`` for the type, ``ValueError`` for the
+    range)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}: a whole number, not {value!r}")
+    if not low <= int(value) <= high:
+        raise ValueError(f"{name}: must lie in [{low}, {high}], got {int(value)}")
+    return int(value)
+
+
 class SnookerEnv(Base):
     """Pot the reds with the cue ball, one strike per step."""
 
     metadata = {"render_modes": []}
 
     def __init__(self, reds: int = 3, max_shots: int = 10):
-        self.reds, self.max_shots = reds, max_shots
+        # At most the 15 reds of snooker, as Frame.open_table racks; at least one shot.
+        self.reds = whole(reds, "reds", 0, 15)
+        self.max_shots = whole(max_shots, "max_shots", 1, 2**63 - 1)
         self.ids = ["cue"] + [f"red{i + 1}" for i in range(reds)]
         if spaces is not None:
             self.observation_space = spaces.Box(-1.0, LENGTH, (len(self.ids), 2), np.float32)
@@ -86,6 +104,8 @@ class SnookerEnv(Base):
         return self._obs(), {}
 
     def step(self, action):
+        if not self.balls:
+            raise ResetNeeded("step: call reset() first (the table is empty until then)")
         speed, aim, side, height, elevation = np.clip(checked(action), ACTION_LOW, ACTION_HIGH)
         scene = {
             "balls": [{"id": b, "pos": list(p)} for b, p in self.balls.items()],

@@ -71,3 +71,24 @@ def test_an_action_of_the_wrong_shape_or_not_finite_is_refused(action):
     env.reset(seed=1)
     with pytest.raises(ValueError, match="^action: 5 finite numbers"):
         env.step(action)
+
+
+def test_a_step_before_reset_asks_for_reset():
+    # Before: "scene: ... the scene has no balls", the scene's message for an empty table.
+    from gymnasium.error import ResetNeeded
+
+    with pytest.raises(ResetNeeded, match=r"^step: call reset\(\) first"):
+        SnookerEnv(reds=1).step([2.0, 0.0, 0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("kw, error", [
+    ({"reds": -1}, ValueError), ({"reds": 16}, ValueError), ({"reds": 2.0}, TypeError),
+    ({"reds": True}, TypeError), ({"max_shots": 0}, ValueError), ({"max_shots": "5"}, TypeError),
+])
+def test_a_bad_count_is_refused_naming_it(kw, error):
+    # Before: reds=-1 was an environment of 0 reds without a word, reds=True one red,
+    # reds=2.0 a TypeError of range() naming nothing, max_shots=0 an episode of one shot. At
+    # most 15 reds, as Frame.open_table racks.
+    (name,) = kw
+    with pytest.raises(error, match=f"^{name}: "):
+        SnookerEnv(**kw)
