@@ -16,7 +16,9 @@ circle), moved to the nearest valid place if it touches a ball.
 
 Reward: the points the player at the table scored, less the points of a foul. Episode: a whole
 frame (``episode="frame"``: one agent plays both players) or one visit (``episode="visit"``:
-it ends when the turn passes); truncated after ``max_strokes`` strokes.
+it ends when the turn passes); truncated after ``max_strokes`` strokes. ``reds`` (0 to 15) and
+``max_strokes`` (at least 1) are checked by the constructor; a step before the first ``reset``
+raises Gymnasium's ``ResetNeeded``.
 
 Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
 """
@@ -24,6 +26,7 @@ Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
 from __future__ import annotations
 
 import math
+import numbers
 
 import gymnasium as gym
 import numpy as np
@@ -38,6 +41,17 @@ ON = ["red", "colour", "yellow", "green", "brown", "blue", "pink", "black"]
 OFFSET_MAX = 0.8 * 0.5 * 0.0262
 ACTION_LOW = np.array([0.2, -math.pi, -OFFSET_MAX, -OFFSET_MAX, 0.0, 0.0, 0.0, 0.0])
 ACTION_HIGH = np.array([8.0, math.pi, OFFSET_MAX, OFFSET_MAX, 0.5, 6.0, 1.0, 1.0])
+
+
+def whole(value, name: str, low: int, high: int) -> int:
+    """``value`` as an ``int`` in [``low``, ``high``]: a Python or NumPy int (not a bool, not a
+    float), refused naming the argument (``TypeError`` for the type, ``ValueError`` for the
+    range)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}: a whole number, not {value!r}")
+    if not low <= int(value) <= high:
+        raise ValueError(f"{name}: must lie in [{low}, {high}], got {int(value)}")
+    return int(value)
 
 
 def nomination_choices(frame) -> list:
@@ -63,7 +77,10 @@ class SnookerFrameEnv(gym.Env):
             raise ValueError(f'start: "open" or "break_off", not {start!r}')
         if episode not in ("frame", "visit"):
             raise ValueError(f'episode: "frame" or "visit", not {episode!r}')
-        self.reds, self.start, self.episode, self.max_strokes = reds, start, episode, max_strokes
+        # Checked here, not at the first reset: Frame.open_table racks 0 to 15 reds.
+        self.reds = whole(reds, "reds", 0, 15)
+        self.max_strokes = whole(max_strokes, "max_strokes", 1, 2**63 - 1)
+        self.start, self.episode = start, episode
         self.observation_space = spaces.Dict({
             "balls": spaces.Box(-1.0, 4.0, (len(IDS), 2), np.float32),
             "on": spaces.Discrete(len(ON)),
@@ -73,6 +90,8 @@ class SnookerFrameEnv(gym.Env):
         self.action_space = spaces.Box(-1.0, 1.0, (len(ACTION_LOW),), dtype=np.float64)
         self.frame: snooker.Frame = snooker.Frame.break_off()
         self.strokes = 0
+        #: Whether reset has been called: a step before it raises Gymnasium's ResetNeeded.
+        self.started = False
 
     def _obs(self) -> dict:
         f = self.frame
@@ -98,6 +117,7 @@ class SnookerFrameEnv(gym.Env):
         else:
             self.frame = snooker.Frame.open_table(self.reds, int(self.np_random.integers(2**63)))
         self.strokes = 0
+        self.started = True
         return self._obs(), {}
 
     def _choices(self, action) -> tuple:
@@ -130,6 +150,8 @@ class SnookerFrameEnv(gym.Env):
         return ACTION_LOW + (a + 1.0) / 2.0 * (ACTION_HIGH - ACTION_LOW)
 
     def step(self, action):
+        if not self.started:
+            raise gym.error.ResetNeeded("step: call reset() first")
         a = self.physical(action)
         speed, aim, side, height, elevation = (float(x) for x in a[:5])
         nominated, cue_ball = self._choices(a)

@@ -172,3 +172,26 @@ def test_the_frame_environment_refuses_an_action_of_the_wrong_shape_or_not_finit
     with pytest.raises(ValueError, match="^action: 8 finite numbers"):
         env.step(action)
     assert env.strokes == 0
+
+
+@pytest.mark.parametrize("kw, error", [
+    ({"reds": 20}, ValueError), ({"reds": -1}, ValueError), ({"reds": 6.0}, TypeError),
+    ({"reds": True}, TypeError), ({"max_strokes": 0}, ValueError),
+    ({"max_strokes": 2.5}, TypeError),
+])
+def test_the_frame_environment_refuses_a_bad_count_when_made(kw, error):
+    # Before: reds=20 was taken and refused only at the first reset (by Frame.open_table);
+    # max_strokes=0 cut every episode after one stroke, 2.5 after three.
+    (name,) = kw
+    with pytest.raises(error, match=f"^{name}: "):
+        SnookerFrameEnv(**kw)
+
+
+def test_a_frame_environment_stepped_before_reset_asks_for_reset():
+    # Before: the step played a stroke on the break-off the constructor left as a placeholder.
+    from gymnasium.error import ResetNeeded
+
+    env = SnookerFrameEnv(reds=3)
+    with pytest.raises(ResetNeeded, match=r"^step: call reset\(\) first"):
+        env.step(np.zeros(8))
+    assert env.strokes == 0
