@@ -17,6 +17,7 @@ use arrow_array::builder::{
     ArrayBuilder, Float64Builder, ListBuilder, StringBuilder, UInt64Builder,
 };
 use arrow_array::{ArrayRef, RecordBatch};
+use arrow_schema::{DataType, Field, Schema, SchemaRef};
 use std::sync::Arc;
 
 /// A table that could not be encoded.
@@ -56,7 +57,37 @@ fn floats(rows: &[Summary], f: impl Fn(&Summary) -> Vec<f64>) -> ArrayRef {
     list(rows, f, |b: &mut Float64Builder, v| b.append_value(v))
 }
 
-/// The rows as an Arrow record batch (the columns above).
+/// A list column's type: lists of `item`, whose values may be null (Arrow's default).
+fn list_of(item: DataType) -> DataType {
+    DataType::List(Arc::new(Field::new("item", item, true)))
+}
+
+/// The table's schema, the same for every batch whatever its rows (so that the tables of
+/// several batches concatenate): `error` and the shot's columns are nullable, `source`,
+/// `scene` and the lists are not.
+pub fn schema() -> SchemaRef {
+    use DataType::{Float64, UInt64, Utf8};
+    let strings = || list_of(Utf8);
+    let floats = || list_of(Float64);
+    Arc::new(Schema::new(vec![
+        Field::new("source", Utf8, false),
+        Field::new("scene", Utf8, false),
+        Field::new("error", Utf8, true),
+        Field::new("ending", Utf8, true),
+        Field::new("duration", Float64, true),
+        Field::new("events", UInt64, true),
+        Field::new("pot_ball", strings(), false),
+        Field::new("pot_pocket", strings(), false),
+        Field::new("pot_t", floats(), false),
+        Field::new("ball", strings(), false),
+        Field::new("x", floats(), false),
+        Field::new("y", floats(), false),
+        Field::new("z", floats(), false),
+        Field::new("motion", strings(), false),
+    ]))
+}
+
+/// The rows as an Arrow record batch (the columns above, with the schema of [`schema`]).
 pub fn record_batch(rows: &[Summary]) -> Result<RecordBatch, TableError> {
     let text = |f: &dyn Fn(&Summary) -> Option<&str>| -> ArrayRef {
         let mut b = StringBuilder::new();
@@ -72,38 +103,24 @@ pub fn record_batch(rows: &[Summary]) -> Result<RecordBatch, TableError> {
         events.append_option(r.events);
     }
     let coord = |k: usize| floats(rows, move |r| r.balls.iter().map(|b| b.1[k]).collect());
-    let columns: Vec<(&str, ArrayRef)> = vec![
-        ("source", text(&|r| Some(&r.source))),
-        ("scene", text(&|r| Some(&r.scene))),
-        ("error", text(&|r| r.error.as_deref())),
-        ("ending", text(&|r| r.ending)),
-        ("duration", Arc::new(duration.finish())),
-        ("events", Arc::new(events.finish())),
-        (
-            "pot_ball",
-            strings(rows, |r| r.pots.iter().map(|p| p.0.as_str()).collect()),
-        ),
-        (
-            "pot_pocket",
-            strings(rows, |r| r.pots.iter().map(|p| p.1.as_str()).collect()),
-        ),
-        (
-            "pot_t",
-            floats(rows, |r| r.pots.iter().map(|p| p.2).collect()),
-        ),
-        (
-            "ball",
-            strings(rows, |r| r.balls.iter().map(|b| b.0.as_str()).collect()),
-        ),
-        ("x", coord(0)),
-        ("y", coord(1)),
-        ("z", coord(2)),
-        (
-            "motion",
-            strings(rows, |r| r.balls.iter().map(|b| b.2).collect()),
-        ),
+    // In the order of [`schema`].
+    let columns: Vec<ArrayRef> = vec![
+        text(&|r| Some(&r.source)),
+        text(&|r| Some(&r.scene)),
+        text(&|r| r.error.as_deref()),
+        text(&|r| r.ending),
+        Arc::new(duration.finish()),
+        Arc::new(events.finish()),
+        strings(rows, |r| r.pots.iter().map(|p| p.0.as_str()).collect()),
+        strings(rows, |r| r.pots.iter().map(|p| p.1.as_str()).collect()),
+        floats(rows, |r| r.pots.iter().map(|p| p.2).collect()),
+        strings(rows, |r| r.balls.iter().map(|b| b.0.as_str()).collect()),
+        coord(0),
+        coord(1),
+        coord(2),
+        strings(rows, |r| r.balls.iter().map(|b| b.2).collect()),
     ];
-    Ok(RecordBatch::try_from_iter(columns)?)
+    Ok(RecordBatch::try_new(schema(), columns)?)
 }
 
 /// The rows as the bytes of a Parquet file.

@@ -85,3 +85,39 @@ fn the_table_reads_back() {
     let ids = balls.as_list::<i32>().value(0);
     assert_eq!(ids.as_string::<i32>().value(1), "red");
 }
+
+/// The schema a reader sees in the Parquet table of `rows`.
+fn schema_of(rows: &[Summary]) -> arrow_schema::SchemaRef {
+    let bytes = bytes::Bytes::from(parquet_bytes(rows).unwrap());
+    ParquetRecordBatchReaderBuilder::try_new(bytes)
+        .unwrap()
+        .schema()
+        .clone()
+}
+
+/// The rows of the JSON-lines scenes `text`.
+fn rows_of(text: &str) -> Vec<Summary> {
+    let sources = from_json_lines(text, "t.jsonl");
+    let outcomes = run_sources(&sources, Some(1), || {}).unwrap();
+    let rows = sources.iter().zip(&outcomes);
+    rows.map(|(s, o)| Summary::of_outcome(&s.name, o)).collect()
+}
+
+/// The tables of two batches concatenate (pyarrow's `concat_tables`, Polars' `concat`, a
+/// DuckDB glob over both): their schemas are the same whether a scene failed or none did.
+/// Inferred from the data, `ending`, `duration` and `events` were non-nullable in a batch
+/// without failures and nullable in one with a failure, and the two tables did not concatenate.
+#[test]
+fn the_schema_does_not_depend_on_the_rows() {
+    let good = r#"{"balls": [{"id": "cue", "pos": [1.0, 0.8]}, {"id": "red", "pos": [2.0, 0.9]}], "cue": {"ball": "cue", "speed": 2.0, "aim": 0.1}}"#;
+    let shots = schema_of(&rows_of(&format!("{good}\n")));
+    let with_failure = schema_of(&rows_of(&format!("{good}\n{{\"balls\": []}}\n")));
+    assert_eq!(shots, with_failure);
+    assert_eq!(shots, snooker_batch::table::schema());
+    for nullable in ["error", "ending", "duration", "events"] {
+        assert!(
+            shots.field_with_name(nullable).unwrap().is_nullable(),
+            "{nullable}"
+        );
+    }
+}
