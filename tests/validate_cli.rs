@@ -56,3 +56,44 @@ fn one_scene_passes_and_writes_its_reports() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// An output that cannot be written is refused before the cross-check runs (minutes over the
+/// whole set), and nothing is written: before, the report was printed, `--json` written, and
+/// only then did `--markdown DIR` (a directory) fail, leaving a half-done output and a
+/// temporary file beside it.
+#[test]
+fn an_output_that_cannot_be_written_is_refused_before_the_run() {
+    let dir = std::env::temp_dir().join(format!("snooker-validate-out-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let blocked = dir.join("md");
+    std::fs::create_dir_all(&blocked).unwrap();
+    let json = dir.join("r.json");
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/validation/scenes/head-on-stun.toml"
+    );
+    let out = snooker()
+        .args(["validate", "--scene", scene, "--json"])
+        .arg(&json)
+        .arg("--markdown")
+        .arg(&blocked)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--markdown") && err.contains("is a directory"),
+        "{err}"
+    );
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["md"], "nothing but the directory in the way");
+    std::fs::remove_dir_all(&dir).ok();
+}

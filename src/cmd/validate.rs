@@ -45,6 +45,16 @@ pub enum BadInput {
     /// The report could not be encoded as JSON.
     #[error("the report as JSON: {0}")]
     Json(#[from] serde_json::Error),
+    /// An output path cannot become a file (checked before the run).
+    #[error("--{flag} {}: {source}", path.display())]
+    Output {
+        /// The option naming it (`json`, `markdown`).
+        flag: &'static str,
+        /// The path.
+        path: PathBuf,
+        /// Why.
+        source: crate::output::OutputError,
+    },
     /// An output file could not be written.
     #[error("cannot write {}: {source:#}", path.display())]
     Write {
@@ -160,6 +170,21 @@ pub fn output(args: &Args, report: &Report) -> Result<(), BadInput> {
     Ok(())
 }
 
+/// Checks, before the cross-check's minutes, that `--json` and `--markdown` can be written.
+fn check_outputs(args: &Args) -> Result<(), BadInput> {
+    let outputs = [("json", &args.json), ("markdown", &args.markdown)];
+    for (flag, path) in outputs {
+        if let Some(path) = path {
+            crate::output::check_output(path).map_err(|source| BadInput::Output {
+                flag,
+                path: path.clone(),
+                source,
+            })?;
+        }
+    }
+    Ok(())
+}
+
 /// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input or
 /// an output that could not be written.
 pub fn run_command(args: Args) -> std::process::ExitCode {
@@ -177,6 +202,7 @@ pub fn execute(args: &Args) -> Result<bool, BadInput> {
     if !(args.dt.is_finite() && args.dt > 0.0 && args.dt <= 1e-2) {
         return Err(BadInput::Dt(args.dt));
     }
+    check_outputs(args)?;
     let specs = load_scenes(&args.scenes)?;
     let report = run(args, &specs);
     output(args, &report)?;
