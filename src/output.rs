@@ -109,12 +109,20 @@ impl AtomicFile {
     pub fn commit(mut self) -> anyhow::Result<()> {
         use anyhow::Context;
         let out = self.out.take().context("the file is closed")?;
-        out.into_inner()
+        let done = out
+            .into_inner()
             .map_err(|e| e.into_error())
             .and_then(|f| f.sync_all())
-            .with_context(|| format!("cannot write {}", self.tmp.display()))?;
-        std::fs::rename(&self.tmp, &self.path)
-            .with_context(|| format!("cannot write {}", self.path.display()))
+            .with_context(|| format!("cannot write {}", self.tmp.display()))
+            .and_then(|()| {
+                std::fs::rename(&self.tmp, &self.path)
+                    .with_context(|| format!("cannot write {}", self.path.display()))
+            });
+        if done.is_err() {
+            // The temporary file is not left behind when it cannot be put in place.
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+        done
     }
 }
 
@@ -123,5 +131,29 @@ impl Drop for AtomicFile {
         if self.out.take().is_some() {
             let _ = std::fs::remove_file(&self.tmp);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A file that cannot be put in place (a directory took its name after the check) leaves
+    /// nothing behind: before, the temporary file `.NAME.tmp` stayed beside it.
+    #[test]
+    fn a_failed_commit_leaves_no_temporary_file() {
+        let dir = std::env::temp_dir().join(format!("snooker-atomic-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let path = dir.join("out.json");
+        std::fs::create_dir_all(&path).unwrap();
+        let mut file = AtomicFile::create(&path).unwrap();
+        file.write(b"{}").unwrap();
+        assert!(file.commit().is_err());
+        let left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(left, ["out.json"]);
+        std::fs::remove_dir_all(&dir).ok();
     }
 }
