@@ -516,6 +516,38 @@ fn bad_synth_requests_are_rejected_and_write_nothing() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("rolling resistance"));
 }
 
+/// `-o DATA.toml` writes three files; when one of them cannot be written (a directory named
+/// DATA.csv) none is, and the scene read is never replaced by the data file. Before, the scene
+/// copy DATA.scene.toml was written (and a temporary DATA.csv left) before the tracks failed,
+/// and `-o SCENE` overwrote the scene with the data file.
+#[test]
+fn synth_writes_its_three_files_or_none() {
+    let dir = temp_dir("synth-three");
+    std::fs::create_dir_all(dir.join("d.csv")).unwrap();
+    let out = dir.join("d.toml");
+    let o = snooker(&["synth", "scenes/one-cushion.toml", "-o", s(&out)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("d.csv") && err.contains("is a directory"),
+        "{err}"
+    );
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["d.csv"], "written: {left:?}");
+    let scene = dir.join("shot.toml");
+    let text = std::fs::read_to_string("scenes/one-cushion.toml").unwrap();
+    std::fs::write(&scene, &text).unwrap();
+    let o = snooker(&["synth", s(&scene), "-o", s(&scene)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("is the scene"), "{err}");
+    assert_eq!(std::fs::read_to_string(&scene).unwrap(), text);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn a_heading_measured_a_turn_away_is_no_gap() {
     // The one-cushion shot's cue ball leaves the cushion at -52.67 degrees; measured as

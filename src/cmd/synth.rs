@@ -143,8 +143,64 @@ fn hidden(effects: &[String], base: &Model) -> anyhow::Result<Hidden> {
     Ok(h)
 }
 
+/// The files `-o DATA.toml` stands for: the data file, and beside it its tracks (DATA.csv) and
+/// scene (DATA.scene.toml).
+struct Outputs {
+    /// The directory they go in.
+    dir: PathBuf,
+    /// The scene's file name.
+    scene_name: String,
+    /// The tracks' file name.
+    tracks_name: String,
+}
+
+impl Outputs {
+    /// The files of `-o out`, each checked before any work (so that none is written when one
+    /// cannot be), and `out` not the scene the shot is read from.
+    fn of(out: &Path, scene: &Path) -> anyhow::Result<Outputs> {
+        if out.extension().and_then(|e| e.to_str()) != Some("toml") {
+            bail!(
+                "-o {}: the data file's name must end in .toml",
+                out.display()
+            );
+        }
+        let stem = out
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .context("-o: no file name")?;
+        let dir = out
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        let files = Outputs {
+            dir: dir.to_path_buf(),
+            scene_name: format!("{stem}.scene.toml"),
+            tracks_name: format!("{stem}.csv"),
+        };
+        for path in [
+            out.to_path_buf(),
+            dir.join(&files.tracks_name),
+            dir.join(&files.scene_name),
+        ] {
+            if let Err(e) = check_output(&path) {
+                bail!("-o {}: {}: {e}", out.display(), path.display());
+            }
+        }
+        let same = |a: &Path, b: &Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b);
+        if same(out, scene) {
+            bail!(
+                "-o {}: is the scene the shot is read from (the data file would replace it)",
+                out.display()
+            );
+        }
+        Ok(files)
+    }
+}
+
 /// Writes synthetic measured data; returns a summary.
 fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
+    let out = &req.out;
+    let names = Outputs::of(out, &req.scene)?;
     let sc = snooker_scene::load(&req.scene)?;
     let mut shot = data_file::shot_from_scene(&sc);
     let base = Model {
@@ -185,24 +241,6 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
     let (duration, samples) = film(&shot, &truth, &hidden.uncatalogued, camera)
         .map_err(|e| anyhow::anyhow!("{}: {e}", req.scene.display()))?;
     shot.samples = samples;
-    let out = &req.out;
-    if out.extension().and_then(|e| e.to_str()) != Some("toml") {
-        bail!(
-            "-o {}: the data file's name must end in .toml",
-            out.display()
-        );
-    }
-    let stem = out
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .context("-o: no file name")?;
-    let dir = out
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if let Err(e) = check_output(out) {
-        bail!("-o {}: {e}", out.display());
-    }
     let truth_text: Vec<String> = hidden
         .effects
         .iter()
@@ -236,19 +274,18 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
         camera.drop_rate * 100.0,
         camera.seed
     );
-    let scene_name = format!("{stem}.scene.toml");
-    let tracks_name = format!("{stem}.csv");
+    let (dir, scene_name, tracks_name) = (&names.dir, &names.scene_name, &names.tracks_name);
     let scene_text = snooker_scene::read_text(&req.scene)
         .with_context(|| format!("cannot read {}", req.scene.display()))?;
     let files = [
-        (dir.join(&scene_name), scene_text),
+        (dir.join(scene_name), scene_text),
         (
-            dir.join(&tracks_name),
+            dir.join(tracks_name),
             data_file::tracks_csv(&shot.samples, &ids, &comment),
         ),
         (
             out.clone(),
-            data_file::data_toml(&comment, &scene_name, &tracks_name, camera.noise, &fit),
+            data_file::data_toml(&comment, scene_name, tracks_name, camera.noise, &fit),
         ),
     ];
     for (path, text) in &files {
@@ -262,7 +299,7 @@ fn synth(req: &Args, camera: &Camera) -> anyhow::Result<String> {
         shot.last_sample(),
         duration,
         out.display(),
-        dir.join(&tracks_name).display(),
-        dir.join(&scene_name).display()
+        dir.join(tracks_name).display(),
+        dir.join(scene_name).display()
     ))
 }
