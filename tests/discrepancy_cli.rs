@@ -548,6 +548,47 @@ fn synth_writes_its_three_files_or_none() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The files of the report directory are checked before the workflow runs: one that cannot
+/// be written (a directory of its name) stops it with exit 2 and nothing written. Before, only
+/// report.json was checked: with summary.txt a directory, report.json was written, then the
+/// command failed. And `--json` with `--cross-validate`, which writes no discrepancy report,
+/// was ignored without a word (exit 0, no file); it is refused.
+#[test]
+fn the_report_directory_is_checked_before_the_run() {
+    let base = [
+        "discrepancy",
+        "data/discrepancy/table-i.toml",
+        "--model",
+        "data/discrepancy/ideal-ball.toml",
+        "-q",
+    ];
+    for blocked in ["summary.txt", "observables.png"] {
+        let dir = temp_dir("report-blocked");
+        std::fs::create_dir_all(dir.join(blocked)).unwrap();
+        let mut a = base.to_vec();
+        a.extend(["--report", s(&dir)]);
+        let o = snooker(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{blocked}: {err}");
+        assert!(err.contains(blocked), "{err}");
+        let left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(left, [blocked], "written: {left:?}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+    let dir = temp_dir("crossval-json");
+    let json = dir.join("cv.json");
+    let mut a = base.to_vec();
+    a.extend(["--cross-validate", "table-i", "--json", s(&json)]);
+    let o = snooker(&a);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--json") && err.contains("--report"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn a_heading_measured_a_turn_away_is_no_gap() {
     // The one-cushion shot's cue ball leaves the cushion at -52.67 degrees; measured as

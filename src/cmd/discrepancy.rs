@@ -47,10 +47,19 @@ pub fn run(args: Args) -> ExitCode {
     {
         return bad_input(format!("--json {}: {e}", p.display()));
     }
+    if let (Some(p), Some(_)) = (&args.json, &args.cross_validate) {
+        return bad_input(format!(
+            "--json {}: --cross-validate writes no discrepancy report; its results go to \
+             --report DIR (cross-validation.json and .md)",
+            p.display()
+        ));
+    }
     if let Some(d) = &args.report {
         // A file of that name, or a file on its way, is in the way of the report directory.
-        if let Err(e) = check_output_dir(d, "report.json") {
-            return bad_input(format!("--report {}: {e}", d.display()));
+        for file in report_files(&m, args.cross_validate.is_some()) {
+            if let Err(e) = check_output_dir(d, &file) {
+                return bad_input(format!("--report {}: {file}: {e}", d.display()));
+            }
         }
     }
     if let Some(prefix) = &args.cross_validate {
@@ -74,6 +83,24 @@ pub fn run(args: Args) -> ExitCode {
         }
         Err(e) => bad_input(format!("{e:#}")),
     }
+}
+
+/// The files the report directory gets: the cross-validation's two, or the report, its
+/// summary, the plots of what was measured and an overlay per tracked shot.
+pub fn report_files(m: &Measurement, cross_validation: bool) -> Vec<String> {
+    if cross_validation {
+        return vec!["cross-validation.md".into(), "cross-validation.json".into()];
+    }
+    let mut files = vec!["report.json".to_string(), "summary.txt".to_string()];
+    if m.shots.iter().any(|s| !s.samples.is_empty()) {
+        files.extend(["tracks.png".into(), "residuals.png".into()]);
+    }
+    if m.shots.iter().any(|s| !s.observables.is_empty()) {
+        files.push("observables.png".into());
+    }
+    let tracked = (0..m.shots.len()).filter(|&i| !m.shots[i].samples.is_empty());
+    files.extend(tracked.map(|i| overlay_file(m, i)));
+    files
 }
 
 /// Writes the JSON report and the report directory.
