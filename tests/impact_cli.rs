@@ -132,3 +132,43 @@ fn bad_input_exits_with_2() {
         assert!(!o.stderr.is_empty());
     }
 }
+
+/// `--plot` is checked before the impact is solved, and a plot that cannot be written leaves
+/// nothing printed: before, `--json --plot DIR` printed the whole JSON document and then
+/// failed (exit 2 with a result on standard output), and `--plot x.txt` was found only by the
+/// image encoder. A plot in a missing directory is written there, as every other output is
+/// (before: "No such file or directory").
+#[test]
+fn the_plot_is_checked_first_and_goes_into_missing_directories() {
+    let dir = common::temp_dir("impact-plot");
+    let base = ["impact", "ball-ball", "--speed", "3", "--json", "--plot"];
+    std::fs::create_dir_all(dir.join("d.png")).unwrap();
+    for (plot, needle) in [
+        (dir.join("d.png"), "is a directory"),
+        (dir.join("slips.txt"), ".png"),
+    ] {
+        let mut a = base.to_vec();
+        a.push(plot.to_str().unwrap());
+        let o = snooker(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("--plot") && err.contains(needle), "{err}");
+        assert!(
+            o.stdout.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    }
+    let png = dir.join("new/dir/slips.png");
+    let mut a = base.to_vec();
+    a.push(png.to_str().unwrap());
+    let o = snooker(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
+    let left: Vec<_> = std::fs::read_dir(png.parent().unwrap())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["slips.png"], "no temporary file left");
+    std::fs::remove_dir_all(&dir).ok();
+}

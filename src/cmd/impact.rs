@@ -4,12 +4,13 @@
 //! (thesis figs. 6.14, 6.15, 6.23).
 
 use super::{bad_input, spec};
-use crate::plot;
+use crate::{output, plot};
+use anyhow::Context;
 use snooker_engine::Params;
 use snooker_engine::impact::impulse::Sample;
 use snooker_scene::impact_report::{Geometry, ImpactRecord, ImpactSpec, impact_report};
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Arguments of `snooker impact`.
@@ -64,10 +65,21 @@ enum Kind {
 
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
+    if let Some(path) = &args.plot
+        && let Err(e) = check_plot(path)
+    {
+        return bad_input(format!("--plot {}: {e}", path.display()));
+    }
     let (doc, samples, axes) = match impact(&args) {
         Ok(r) => r,
         Err(e) => return bad_input(e),
     };
+    // The plot first: a plot that cannot be drawn leaves nothing printed.
+    if let Some(path) = &args.plot
+        && let Err(e) = draw(&samples, axes, path)
+    {
+        return bad_input(format!("--plot {}: {e:#}", path.display()));
+    }
     if args.json {
         outln!(
             "{}",
@@ -76,15 +88,43 @@ pub fn run(args: Args) -> ExitCode {
     } else {
         out!("{}", text(&doc));
     }
-    if let Some(path) = &args.plot {
-        if let Err(e) = plot::slips(&samples, axes, path) {
-            return bad_input(format!("--plot {}: {e:#}", path.display()));
-        }
-        if !args.json {
-            outln!("plot written to {}", path.display());
-        }
+    if let Some(path) = &args.plot
+        && !args.json
+    {
+        outln!("plot written to {}", path.display());
     }
     ExitCode::SUCCESS
+}
+
+/// Checks, before any work, that the plot can be written to `path`: a PNG file's name, and a
+/// path that can become a file.
+fn check_plot(path: &Path) -> Result<(), String> {
+    let png = path
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("png"));
+    if !png {
+        return Err("the plot is a PNG: its name must end in .png".into());
+    }
+    output::check_output(path).map_err(|e| e.to_string())
+}
+
+/// Draws the plot into a temporary PNG beside `path` (missing directories created) and puts it
+/// in place: nothing is left half-drawn.
+fn draw(samples: &[Sample], axes: plot::SlipAxes, path: &Path) -> anyhow::Result<()> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let name = path.file_name().context("no file name")?.to_string_lossy();
+    let tmp = dir.join(format!(".{name}.tmp.png"));
+    let done = plot::slips(samples, axes, &tmp).and_then(|()| {
+        std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))
+    });
+    if done.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    done
 }
 
 /// The result document (the scene crate's impact report), the samples for a plot and their
