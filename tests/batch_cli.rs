@@ -126,3 +126,41 @@ fn bad_input_is_one_message_and_nothing_written() {
         assert!(!out.exists(), "{args:?}");
     }
 }
+
+/// A thread count far beyond any machine's cores is refused at once (exit 2, naming
+/// `--threads`): before, `--threads 100000` (or 2^64 - 1) started that many threads for
+/// every chunk and had not finished a 15-scene batch after a minute.
+#[test]
+fn a_huge_thread_count_is_refused_at_once() {
+    let dir = temp_dir("batch-threads");
+    let out = dir.join("r.jsonl");
+    for n in ["100000", "18446744073709551615"] {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_snooker"))
+            .args(["batch", "scenes", "--threads", n, "--out"])
+            .arg(&out)
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        let status = loop {
+            if let Some(s) = child.try_wait().unwrap() {
+                break s;
+            }
+            if start.elapsed().as_secs() > 20 {
+                child.kill().unwrap();
+                child.wait().unwrap();
+                panic!("--threads {n}: still running after 20 s");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        };
+        let mut err = String::new();
+        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        assert_eq!(status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("--threads") && err.contains("at most"),
+            "{err}"
+        );
+        assert!(!out.exists());
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -82,6 +82,23 @@ pub fn run_sources(
     })
 }
 
+/// The most threads a batch runs on. Each shot is simulated alone, so threads beyond the cores
+/// only add their stacks and their switching; a count past this is a typo, and starting it
+/// (100,000 threads) took minutes before failing or simulating anything.
+pub const MAX_THREADS: usize = 1024;
+
+/// Checks a thread count before any work: at least one, at most [`MAX_THREADS`].
+pub fn check_threads(threads: usize) -> Result<(), ThreadsError> {
+    let fail = |reason: String| ThreadsError { threads, reason };
+    if threads == 0 {
+        return Err(fail("at least one is needed".into()));
+    }
+    if threads > MAX_THREADS {
+        return Err(fail(format!("at most {MAX_THREADS} are started")));
+    }
+    Ok(())
+}
+
 /// Runs `work` on a pool of `threads` threads (the global pool, all cores, if `None`).
 pub fn run_on<T: Send>(
     threads: Option<usize>,
@@ -91,9 +108,7 @@ pub fn run_on<T: Send>(
         None => Ok(work()),
         Some(n) => {
             let fail = |reason: String| ThreadsError { threads: n, reason };
-            if n == 0 {
-                return Err(fail("at least one is needed".into()));
-            }
+            check_threads(n)?;
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(n)
                 .build()

@@ -24,7 +24,7 @@ pub struct Args {
     /// summaries (the book's "Many shots" page, docs/python.md).
     #[arg(long, value_name = "RESULTS")]
     pub out: PathBuf,
-    /// Threads to simulate on (default: every core).
+    /// Threads to simulate on (default: every core; at most 1024).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
     /// Print nothing but errors (no progress bar, no summary).
@@ -90,8 +90,10 @@ pub fn run(args: Args) -> ExitCode {
     if let Err(e) = output::check_output(out) {
         return bad_input(format!("--out {}: {e}", out.display()));
     }
-    if args.threads == Some(0) {
-        return bad_input("--threads 0: at least one thread is needed");
+    if let Some(n) = args.threads
+        && let Err(e) = snooker_batch::run::check_threads(n)
+    {
+        return bad_input(format!("--threads {n}: {}", e.reason));
     }
     let sources = match input::read(&args.scenes) {
         Ok(s) => s,
