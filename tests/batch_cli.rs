@@ -164,3 +164,24 @@ fn a_huge_thread_count_is_refused_at_once() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The results never replace the batch's own input: before, `batch shots.jsonl --out
+/// shots.jsonl` read the scenes, then wrote the results over them (exit 0, the scenes gone).
+#[test]
+fn the_results_do_not_replace_the_input() {
+    let dir = temp_dir("batch-same");
+    let input = dir.join("shots.jsonl");
+    let text = "{\"balls\": [{\"id\": \"cue\", \"pos\": [1.0, 0.8]}], \"cue\": {\"ball\": \"cue\", \"speed\": 1.0, \"aim\": 0.0}}\n";
+    std::fs::write(&input, text).unwrap();
+    let o = snooker(&[
+        "batch",
+        input.to_str().unwrap(),
+        "--out",
+        input.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--out") && err.contains("input"), "{err}");
+    assert_eq!(std::fs::read_to_string(&input).unwrap(), text);
+    std::fs::remove_dir_all(&dir).ok();
+}

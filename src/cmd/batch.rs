@@ -84,11 +84,22 @@ fn progress(len: usize, quiet: bool) -> ProgressBar {
     bar
 }
 
+/// Whether `a` and `b` are the same existing file.
+fn same_file(a: &Path, b: &Path) -> bool {
+    matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
+}
+
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let out = &args.out;
     if let Err(e) = output::check_output(out) {
         return bad_input(format!("--out {}: {e}", out.display()));
+    }
+    if same_file(out, &args.scenes) {
+        return bad_input(format!(
+            "--out {}: is the batch's input (the results would replace its scenes)",
+            out.display()
+        ));
     }
     if let Some(n) = args.threads
         && let Err(e) = snooker_batch::run::check_threads(n)
