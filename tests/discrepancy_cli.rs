@@ -653,3 +653,24 @@ fn a_heading_measured_a_turn_away_is_no_gap() {
     let turned = gap(-52.6 + 360.0);
     assert!((turned - near).abs() < 1e-9, "{turned} against {near}");
 }
+
+/// `--json -` puts the report on standard output, as `simulate --json -` does, with the
+/// summary on standard error: before, it wrote a file named `-`.
+#[test]
+fn json_to_standard_output() {
+    let dir = temp_dir("json-stdout");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_snooker"))
+        .current_dir(&dir)
+        .args(["discrepancy", "--json", "-", "--model"])
+        .arg(std::fs::canonicalize("data/discrepancy/ideal-ball.toml").unwrap())
+        .arg(std::fs::canonicalize("data/discrepancy/table-i.toml").unwrap())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(doc["named"][0], "ball_friction");
+    assert!(err.contains("named: ball_friction"), "{err}");
+    assert!(!dir.join("-").exists(), "a file named -");
+    std::fs::remove_dir_all(&dir).ok();
+}

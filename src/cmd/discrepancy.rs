@@ -22,7 +22,8 @@ pub struct Args {
     /// Write the full report (JSON, summary, plots) into this directory.
     #[arg(long, value_name = "DIR")]
     report: Option<PathBuf>,
-    /// Write the JSON report to this file.
+    /// Write the JSON report to this file (`-`: standard output, the summary then on
+    /// standard error).
     #[arg(long, value_name = "OUT")]
     json: Option<PathBuf>,
     /// Instead of the workflow: cross-validate on the shots whose names start with PREFIX
@@ -43,6 +44,7 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(e),
     };
     if let Some(p) = &args.json
+        && !is_stdout(p)
         && let Err(e) = check_output(p)
     {
         return bad_input(format!("--json {}: {e}", p.display()));
@@ -69,15 +71,18 @@ pub fn run(args: Args) -> ExitCode {
         Ok(o) => o,
         Err(e) => return failed(format!("{}: {e}", args.data.display())),
     };
-    if !args.quiet {
-        out!("{}", dsc::report::text(&m, &findings));
-    }
+    // With the JSON on standard output, the summary goes to standard error.
+    let to_stdout = args.json.as_deref().is_some_and(is_stdout);
+    let say = |text: &str| match (args.quiet, to_stdout) {
+        (true, _) => {}
+        (false, true) => eprint!("{text}"),
+        (false, false) => out!("{text}"),
+    };
+    say(&dsc::report::text(&m, &findings));
     match write(&args, &m, &findings) {
         Ok(files) => {
-            if !args.quiet {
-                for f in files {
-                    outln!("wrote {}", f.display());
-                }
+            for f in files {
+                say(&format!("wrote {}\n", f.display()));
             }
             ExitCode::SUCCESS
         }
@@ -103,14 +108,23 @@ pub fn report_files(m: &Measurement, cross_validation: bool) -> Vec<String> {
     files
 }
 
+/// Whether an output path is `-`, standard output.
+fn is_stdout(p: &Path) -> bool {
+    p.as_os_str() == "-"
+}
+
 /// Writes the JSON report and the report directory.
 fn write(req: &Args, m: &Measurement, o: &Findings) -> anyhow::Result<Vec<PathBuf>> {
     let doc = dsc::report::json(m, o);
     let text = serde_json::to_string_pretty(&doc)? + "\n";
     let mut written = Vec::new();
     if let Some(p) = &req.json {
-        write_atomic(p, text.as_bytes())?;
-        written.push(p.clone());
+        if is_stdout(p) {
+            out!("{text}");
+        } else {
+            write_atomic(p, text.as_bytes())?;
+            written.push(p.clone());
+        }
     }
     if let Some(dir) = &req.report {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
