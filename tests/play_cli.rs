@@ -153,6 +153,9 @@ fn bad_input_exits_2_with_one_message_and_writes_nothing() {
         (vec!["--effort", "0"], "--effort"),
         (vec!["--opponent", "shark"], "--opponent"),
         (vec!["--visit", "--frame"], "--frame"),
+        // rayon starts every thread asked for: 100,000 took minutes before this bound.
+        (vec!["--threads", "100000"], "at most 1024"),
+        (vec!["--threads", "0"], "at least one"),
     ] {
         let mut args = vec!["play", OPEN, "--log", log.to_str().unwrap()];
         args.extend(extra);

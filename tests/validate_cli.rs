@@ -57,6 +57,29 @@ fn one_scene_passes_and_writes_its_reports() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `--json -` is standard output, as for `simulate`, `referee`, `plan` and `discrepancy`:
+/// before, a file named `-` was written.
+#[test]
+fn json_to_standard_output() {
+    let dir = std::env::temp_dir().join(format!("snooker-validate-dash-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/validation/scenes/head-on-stun.toml"
+    );
+    let out = snooker()
+        .current_dir(&dir)
+        .args(["validate", "--scene", scene, "--json", "-"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    assert_eq!(doc["runs"][0]["outcome"]["status"], "compared");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("PASS"));
+    assert!(!dir.join("-").exists(), "a file named - was written");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// An output that cannot be written is refused before the cross-check runs (minutes over the
 /// whole set), and nothing is written: before, the report was printed, `--json` written, and
 /// only then did `--markdown DIR` (a directory) fail, leaving a half-done output and a

@@ -45,7 +45,7 @@ pub struct Args {
     /// likeliest pot, no position, no safety).
     #[arg(long, value_name = "AGENT", default_value = "player")]
     pub opponent: String,
-    /// Threads to simulate on (default: every core); the log does not depend on it.
+    /// Threads to simulate on, 1 to 1024 (default: every core); the log does not depend on it.
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
     /// Write the play log (formats.md, "Play log"): one JSON line per stroke.
@@ -340,6 +340,10 @@ pub fn run(args: Args) -> ExitCode {
         max_strokes: args.max_strokes,
         watch: Default::default(),
     };
+    // The batch's bound: rayon starts every thread asked for (100,000 took minutes).
+    if let Some(Err(e)) = args.threads.map(snooker_batch::run::check_threads) {
+        return bad_input(format!("--threads {}: {}", e.threads, e.reason));
+    }
     let pool = match rayon::ThreadPoolBuilder::new()
         .num_threads(args.threads.unwrap_or(0))
         .build()

@@ -155,24 +155,43 @@ pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
     })
 }
 
-/// Prints the report and writes the requested files.
+/// Whether `--json` asks for standard output (`-`, as `simulate`, `referee` and `plan` take it).
+fn json_to_stdout(args: &Args) -> bool {
+    args.json.as_ref().is_some_and(|p| p.as_os_str() == "-")
+}
+
+/// Prints the report and writes the requested files; with `--json -` the JSON is standard
+/// output's and the text report goes to standard error.
 pub fn output(args: &Args, report: &Report) -> Result<(), BadInput> {
-    out!("{}", report::text(report));
+    let to_stdout = json_to_stdout(args);
+    let say = |text: &str| {
+        if to_stdout {
+            eprint!("{text}");
+        } else {
+            out!("{text}");
+        }
+    };
+    say(&report::text(report));
     if let Some(p) = &args.json {
-        let text = serde_json::to_string_pretty(report)?;
-        write(p, &(text + "\n"))?;
-        outln!("JSON written to {}", p.display());
+        let text = serde_json::to_string_pretty(report)? + "\n";
+        if to_stdout {
+            out!("{text}");
+        } else {
+            write(p, &text)?;
+            say(&format!("JSON written to {}\n", p.display()));
+        }
     }
     if let Some(p) = &args.markdown {
         write(p, &report::markdown(report))?;
-        outln!("Markdown written to {}", p.display());
+        say(&format!("Markdown written to {}\n", p.display()));
     }
     Ok(())
 }
 
 /// Checks, before the cross-check's minutes, that `--json` and `--markdown` can be written.
 fn check_outputs(args: &Args) -> Result<(), BadInput> {
-    let outputs = [("json", &args.json), ("markdown", &args.markdown)];
+    let json = args.json.clone().filter(|_| !json_to_stdout(args));
+    let outputs = [("json", &json), ("markdown", &args.markdown)];
     for (flag, path) in outputs {
         if let Some(path) = path {
             crate::output::check_output(path).map_err(|source| BadInput::Output {
