@@ -3,6 +3,12 @@
 
 use std::process::Command;
 
+/// The validation set's scene every run here uses.
+const HEAD_ON_STUN: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/validation/scenes/head-on-stun.toml"
+);
+
 fn snooker() -> Command {
     Command::new(env!("CARGO_BIN_EXE_snooker"))
 }
@@ -29,10 +35,7 @@ fn one_scene_passes_and_writes_its_reports() {
     let dir = std::env::temp_dir().join(format!("snooker-validate-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (json, md) = (dir.join("r.json"), dir.join("r.md"));
-    let scene = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/validation/scenes/head-on-stun.toml"
-    );
+    let scene = HEAD_ON_STUN;
     let out = snooker()
         .args(["validate", "--scene", scene, "--json"])
         .arg(&json)
@@ -63,10 +66,7 @@ fn one_scene_passes_and_writes_its_reports() {
 fn json_to_standard_output() {
     let dir = std::env::temp_dir().join(format!("snooker-validate-dash-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let scene = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/validation/scenes/head-on-stun.toml"
-    );
+    let scene = HEAD_ON_STUN;
     let out = snooker()
         .current_dir(&dir)
         .args(["validate", "--scene", scene, "--json", "-"])
@@ -91,10 +91,7 @@ fn an_output_that_cannot_be_written_is_refused_before_the_run() {
     let blocked = dir.join("md");
     std::fs::create_dir_all(&blocked).unwrap();
     let json = dir.join("r.json");
-    let scene = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/validation/scenes/head-on-stun.toml"
-    );
+    let scene = HEAD_ON_STUN;
     let out = snooker()
         .args(["validate", "--scene", scene, "--json"])
         .arg(&json)

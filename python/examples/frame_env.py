@@ -26,13 +26,13 @@ Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
 from __future__ import annotations
 
 import math
-import numbers
 
 import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
 
 import snooker
+from gym_env import whole  # the scene environment's check of a whole-number argument
 
 IDS = ["cue"] + [f"red{i}" for i in range(1, 16)] + [
     "yellow", "green", "brown", "blue", "pink", "black"]
@@ -41,17 +41,6 @@ ON = ["red", "colour", "yellow", "green", "brown", "blue", "pink", "black"]
 OFFSET_MAX = 0.8 * 0.5 * 0.0262
 ACTION_LOW = np.array([0.2, -math.pi, -OFFSET_MAX, -OFFSET_MAX, 0.0, 0.0, 0.0, 0.0])
 ACTION_HIGH = np.array([8.0, math.pi, OFFSET_MAX, OFFSET_MAX, 0.5, 6.0, 1.0, 1.0])
-
-
-def whole(value, name: str, low: int, high: int) -> int:
-    """``value`` as an ``int`` in [``low``, ``high``]: a Python or NumPy int (not a bool, not a
-    float), refused naming the argument (``TypeError`` for the type, ``ValueError`` for the
-    range)."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name}: a whole number, not {value!r}")
-    if not low <= int(value) <= high:
-        raise ValueError(f"{name}: must lie in [{low}, {high}], got {int(value)}")
-    return int(value)
 
 
 def nomination_choices(frame) -> list:
