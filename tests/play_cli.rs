@@ -1,13 +1,15 @@
 //! `snooker play`: every logged stroke replays exactly through `snooker referee` (its frame
 //! with `executed` as `[cue]` gives the logged verdict, and the strokes chain: each frame is
 //! the one the stroke before left, but for the player's choices); the same seed and effort
-//! give the same log on one thread and on two; a frame against the greedy baseline; bad input
-//! (exit 2, one message, nothing written).
+//! give the same log on one thread and on two; a frame against the greedy baseline; the
+//! recording read back against the log (scores, ball on, targets, the balls as each stroke
+//! starts); bad input (exit 2, one message, nothing written).
 
 mod common;
 
 use common::{snooker, temp_dir};
 use serde_json::Value;
+use std::collections::BTreeMap;
 use std::path::Path;
 
 const OPEN: &str = "scenes/frames/open-table.toml";
@@ -308,5 +310,126 @@ fn the_recording_opens_at_the_end_with_the_cue_balls_path_of_every_stroke() {
         if !in_hand {
             assert_eq!(start, end, "stroke {}", k + 1);
         }
+    }
+    check_strokes_in_recording(&bytes, &log);
+}
+
+/// Everything a recording holds, by entity path (without the leading `/`).
+fn decode_recording(bytes: &[u8]) -> BTreeMap<String, Vec<rerun::log::Chunk>> {
+    use rerun::external::re_log_encoding::DecoderApp;
+    use rerun::log::{Chunk, LogMsg};
+    let mut out = BTreeMap::<String, Vec<Chunk>>::new();
+    for msg in DecoderApp::decode_lazy(bytes) {
+        if let LogMsg::ArrowMsg(store, arrow) = msg.expect("a valid .rrd stream")
+            && store.kind() == rerun::StoreKind::Recording
+        {
+            let chunk = Chunk::from_arrow_msg(&arrow).unwrap();
+            let path = chunk.entity_path().to_string();
+            out.entry(path.trim_start_matches('/').into())
+                .or_default()
+                .push(chunk);
+        }
+    }
+    out
+}
+
+/// A component's rows at an entity: (time in ns, values), in time order (rows at one time in
+/// the order logged).
+fn rows_of<C: rerun::Component + Clone>(
+    d: &BTreeMap<String, Vec<rerun::log::Chunk>>,
+    entity: &str,
+    component: rerun::ComponentIdentifier,
+) -> Vec<(i64, Vec<C>)> {
+    let timeline = rerun::TimelineName::from(snooker::record::TIMELINE);
+    let mut out = Vec::new();
+    for chunk in d.get(entity).into_iter().flatten() {
+        let Some(times) = chunk.timelines().get(&timeline) else {
+            continue;
+        };
+        let times = times.times_raw().to_vec();
+        for ((row, t), v) in chunk
+            .row_ids()
+            .zip(times)
+            .zip(chunk.iter_component::<C>(component))
+        {
+            out.push((t, row, v.to_vec()));
+        }
+    }
+    out.sort_by_key(|r| (r.0, r.1));
+    out.into_iter().map(|(t, _, v)| (t, v)).collect()
+}
+
+/// The latest row at or before `t` (what the viewer shows at `t`).
+fn at<C: Clone>(rows: &[(i64, Vec<C>)], t: i64) -> Option<&Vec<C>> {
+    rows.iter().rev().find(|r| r.0 <= t).map(|r| &r.1)
+}
+
+/// Each stroke of a play log as its recording shows it: at the stroke's start (where its
+/// planned target is logged) the scoreboard has the log's scores, player and ball on, every
+/// ball of the stroke's frame is shown where the frame has it (a respotted colour back on its
+/// spot, the cue ball where it was placed), the cue ball is sampled at the very instant it is
+/// struck, and the target is the plan's; at its end the scoreboard has the referee's scores.
+fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
+    use rerun::components::{HalfSize3D, Position3D, Text, Translation3D};
+    let d = decode_recording(bytes);
+    let positions = rerun::Points3D::descriptor_positions().component;
+    let labels = rerun::Points3D::descriptor_labels().component;
+    let translation = rerun::Transform3D::descriptor_translation().component;
+    let half_sizes = rerun::Ellipsoids3D::descriptor_half_sizes().component;
+    let targets = rows_of::<Position3D>(&d, "plan/target", positions);
+    let board = rows_of::<Text>(&d, "frame/scoreboard", labels);
+    assert_eq!(targets.len(), log.len());
+    let close = |a: [f32; 3], b: [f64; 3]| {
+        a.iter()
+            .zip(b)
+            .all(|(a, b)| (f64::from(*a) - b).abs() <= 4.0 * f64::from(f32::EPSILON))
+    };
+    for (k, (line, (t0, target))) in log.iter().zip(&targets).enumerate() {
+        let n = k + 1;
+        let file = snooker_rules::parse(line["frame"].as_str().unwrap(), "log").unwrap();
+        let frame = &file.frame;
+        let state = frame.state();
+        let r = frame.params().ball_radius;
+        let to = &line["plan"]["cue_to"];
+        let to = [to[0].as_f64().unwrap(), to[1].as_f64().unwrap(), r];
+        assert!(close(target[0].0.0, to), "stroke {n}: target {target:?}");
+        let shown = at(&board, *t0).unwrap()[0].as_str().to_string();
+        let want = format!(
+            "player 0: {}   player 1: {}   | player {} to play, on {}",
+            state.scores[0], state.scores[1], state.to_play, state.on
+        );
+        assert!(shown.starts_with(&want), "stroke {n}: {shown} / {want}");
+        for ball in frame.balls() {
+            let id = &ball.id;
+            let pos = rows_of::<Translation3D>(&d, &format!("balls/{id}"), translation);
+            let body = rows_of::<HalfSize3D>(&d, &format!("balls/{id}/body"), half_sizes);
+            let p = at(&pos, *t0).unwrap()[0].0.0;
+            let at_start = ball.state.pos;
+            assert!(
+                close(p, [at_start.x, at_start.y, at_start.z]),
+                "stroke {n}: {id} shown at {p:?} as it starts, the frame has it at {at_start:?}"
+            );
+            assert!(
+                !at(&body, *t0).unwrap().is_empty(),
+                "stroke {n}: {id} is on the table but not shown as it starts"
+            );
+            if frame
+                .cue_index()
+                .is_some_and(|c| frame.balls()[c].id == *id)
+            {
+                assert!(
+                    pos.iter().any(|r| r.0 == *t0),
+                    "stroke {n}: the cue ball is not sampled as it is struck"
+                );
+            }
+        }
+        let end = board.iter().find(|r| r.0 > *t0).unwrap();
+        let scores = &line["referee"]["scores"];
+        let want = format!("player 0: {}   player 1: {}", scores[0], scores[1]);
+        assert!(
+            end.1[0].as_str().starts_with(&want),
+            "stroke {n}: {:?}",
+            end.1
+        );
     }
 }

@@ -1,8 +1,9 @@
 //! A recording of a sequence of strokes of a frame of snooker (`snooker referee F1 F2 ...
 //! --record OUT.rrd`): the strokes one after another on the one timeline [`super::TIMELINE`],
 //! [`PAUSE`] apart, every ball as in a shot's recording (a respotted colour reappears on its
-//! spot, the cue ball in hand in the D, when the next stroke starts), and the frame as it goes:
-//! a scoreboard above the near cushion (`frame/scoreboard`: the scores, who is to play and the
+//! spot, the cue ball in hand in the D, when the next stroke starts: each stroke's start is
+//! sampled just before and just after, as an event is, `sample::Schedule::with_cuts`), and the
+//! frame as it goes: a scoreboard above the near cushion (`frame/scoreboard`: the scores, who is to play and the
 //! ball on, updated as each stroke starts and ends) and the referee's calls in the event log
 //! (`events/frame`).
 
@@ -164,7 +165,9 @@ pub fn encode_strokes_with(
         options: *first.frame.options(),
         strike: None,
     };
-    super::encode_with(&scene, &shot, opts, &[], |rec| {
+    // Each stroke after the first starts with no event: balls struck, respotted or placed.
+    let cuts = starts.get(1..).unwrap_or_default();
+    super::encode_with_cuts(&scene, &shot, cuts, opts, &[], |rec| {
         log_frame(rec, strokes, &starts)?;
         extra(rec, &starts)?;
         rec.reset_time();

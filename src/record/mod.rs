@@ -183,14 +183,29 @@ pub fn encode_with(
     overlays: &[Overlay],
     extra: impl FnOnce(&RecordingStream) -> Result<(), RecordError>,
 ) -> Result<Vec<u8>, RecordError> {
+    encode_with_cuts(scene, shot, &[], opts, overlays, extra)
+}
+
+/// As [`encode_with`], with every time of `cuts` sampled twice, just before and just after:
+/// the instants where balls change with no event (the start of each stroke of a sequence).
+pub fn encode_with_cuts(
+    scene: &Scene,
+    shot: &Shot,
+    cuts: &[f64],
+    opts: &RecordOptions,
+    overlays: &[Overlay],
+    extra: impl FnOnce(&RecordingStream) -> Result<(), RecordError>,
+) -> Result<Vec<u8>, RecordError> {
     opts.validate()?;
-    // Checked before anything is allocated: the grid, the end, two instants per event.
-    let instants = (shot.duration * opts.rate).floor() + 2.0 + 2.0 * shot.events.len() as f64;
+    // Checked before anything is allocated: the grid, the end, two instants per event and
+    // per cut.
+    let instants =
+        (shot.duration * opts.rate).floor() + 2.0 + 2.0 * (shot.events.len() + cuts.len()) as f64;
     let samples = instants * shot.tracks.len() as f64;
     if samples > MAX_BALL_SAMPLES as f64 {
         return Err(RecordError::TooLarge(samples as usize));
     }
-    let schedule = Schedule::new(shot, opts.rate);
+    let schedule = Schedule::with_cuts(shot, opts.rate, cuts);
     let states: Vec<Vec<BallState>> = (0..shot.tracks.len())
         .map(|b| schedule.states(shot, b))
         .collect();

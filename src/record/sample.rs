@@ -2,7 +2,8 @@
 //! (just before and just after), and the exact states there (the balls' orientations there:
 //! `snooker_engine::sim::orientation`).
 
-use snooker_engine::{BallState, Shot};
+use snooker_engine::sim::Track;
+use snooker_engine::{BallState, Params, Shot};
 
 /// Why a sample was taken.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,19 +30,39 @@ pub struct Instant {
 pub struct Schedule {
     /// The instants.
     pub instants: Vec<Instant>,
-    /// Events grouped by identical time: `(t, first event index, one past the last)`.
+    /// Events grouped by identical time: `(t, first event index, one past the last)`; a cut
+    /// with no event at its time is a group of no events.
     pub groups: Vec<(f64, usize, usize)>,
+    /// The cuts (see [`Schedule::with_cuts`]), in time order.
+    pub cuts: Vec<f64>,
 }
 
 impl Schedule {
     /// Grid `k / rate` for every `k` with `k / rate <= duration`, the end of the shot, and every
     /// distinct event time twice; a grid point equal to an event time is covered by the pair.
     pub fn new(shot: &Shot, rate: f64) -> Schedule {
+        Schedule::with_cuts(shot, rate, &[])
+    }
+
+    /// As [`Schedule::new`], and every time of `cuts` twice as well: instants where the balls
+    /// change with no event (the start of each stroke of a sequence: a ball struck, respotted
+    /// or placed in hand), so that the state just before and just after are both sampled.
+    pub fn with_cuts(shot: &Shot, rate: f64, cuts: &[f64]) -> Schedule {
         let mut groups: Vec<(f64, usize, usize)> = Vec::new();
         for (i, e) in shot.events.iter().enumerate() {
             match groups.last_mut() {
                 Some(g) if g.0 == e.t => g.2 = i + 1,
                 _ => groups.push((e.t, i, i + 1)),
+            }
+        }
+        let mut cuts = cuts.to_vec();
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        for &t in &cuts {
+            let at = groups.partition_point(|g| g.0 < t);
+            if groups.get(at).is_none_or(|g| g.0 != t) {
+                let first = groups.get(at).map_or(shot.events.len(), |g| g.1);
+                groups.insert(at, (t, first, first));
             }
         }
         let mut grid: Vec<f64> = (0u64..)
@@ -72,12 +93,17 @@ impl Schedule {
                 });
             }
         }
-        Schedule { instants, groups }
+        Schedule {
+            instants,
+            groups,
+            cuts,
+        }
     }
 
     /// Ball `ball`'s state at every instant: the exact trajectory, and at a `Before` instant
-    /// the `before` state of the first event of the group that involves the ball (the
-    /// trajectory itself gives the state after an instant's events).
+    /// the `before` state of the first event of the group that involves the ball, or at a cut
+    /// the state its track held up to the cut (the trajectory itself gives the state after an
+    /// instant's events).
     pub fn states(&self, shot: &Shot, ball: usize) -> Vec<BallState> {
         let track = &shot.tracks[ball];
         self.instants
@@ -92,9 +118,23 @@ impl Schedule {
                     if let Some(s) = before {
                         return s;
                     }
+                    if self.cuts.binary_search_by(|c| c.total_cmp(&i.t)).is_ok() {
+                        return held_before(track, i.t, &shot.params);
+                    }
                 }
                 track.state_at(i.t, &shot.params)
             })
             .collect()
+    }
+}
+
+/// The state `track` held just before `t`: its latest segment starting before `t`, at `t`.
+fn held_before(track: &Track, t: f64, p: &Params) -> BallState {
+    match track.segments.partition_point(|s| s.t < t).checked_sub(1) {
+        Some(i) => {
+            let seg = &track.segments[i];
+            snooker_engine::motion::state_at(&seg.state, t - seg.t, p)
+        }
+        None => track.state_at(t, p),
     }
 }
