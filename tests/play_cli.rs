@@ -368,7 +368,8 @@ fn at<C: Clone>(rows: &[(i64, Vec<C>)], t: i64) -> Option<&Vec<C>> {
 /// planned target is logged) the scoreboard has the log's scores, player and ball on, every
 /// ball of the stroke's frame is shown where the frame has it (a respotted colour back on its
 /// spot, the cue ball where it was placed), the cue ball is sampled at the very instant it is
-/// struck, and the target is the plan's; at its end the scoreboard has the referee's scores.
+/// struck, the target is the plan's and the path meant is the noise-free strike's, through each
+/// of its cue-ball events; at its end the scoreboard has the referee's scores.
 fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
     use rerun::components::{HalfSize3D, Position3D, Text, Translation3D};
     let d = decode_recording(bytes);
@@ -378,6 +379,8 @@ fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
     let half_sizes = rerun::Ellipsoids3D::descriptor_half_sizes().component;
     let targets = rows_of::<Position3D>(&d, "plan/target", positions);
     let board = rows_of::<Text>(&d, "frame/scoreboard", labels);
+    let strips = rerun::LineStrips3D::descriptor_strips().component;
+    let intended = rows_of::<rerun::components::LineStrip3D>(&d, "plan/intended", strips);
     assert_eq!(targets.len(), log.len());
     let close = |a: [f32; 3], b: [f64; 3]| {
         a.iter()
@@ -420,6 +423,39 @@ fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
                 assert!(
                     pos.iter().any(|r| r.0 == *t0),
                     "stroke {n}: the cue ball is not sampled as it is struck"
+                );
+            }
+        }
+        // The path meant: the noise-free strike's cue-ball path, through every place where the
+        // cue ball's way turns (its events), ending at the planned target.
+        let e = &line["intended"];
+        let num = |v: &Value| v.as_f64().unwrap();
+        let meant = snooker_engine::Cue {
+            speed: num(&e["speed"]),
+            aim: num(&e["aim"]),
+            offset: [num(&e["offset"][0]), num(&e["offset"][1])],
+            elevation: num(&e["elevation"]),
+        };
+        let shot =
+            snooker_engine::simulate(&frame.setup(&meant).unwrap(), frame.options()).unwrap();
+        let cue = frame.cue_index().unwrap();
+        let intended = at(&intended, *t0).unwrap();
+        let path = &intended[0].0;
+        assert!(close(path.last().unwrap().0, to), "stroke {n}: {path:?}");
+        for ev in shot.events.iter().filter(|ev| ev.balls.contains(&cue)) {
+            let p = shot.tracks[cue].state_at(ev.t, &shot.params);
+            if p.motion.in_play() {
+                assert!(
+                    path.iter().any(|q| close(q.0, [p.pos.x, p.pos.y, p.pos.z])),
+                    "stroke {n}: the path meant misses the cue ball's {} at {:?} (nearest point {:?})",
+                    ev.kind.name(),
+                    p.pos,
+                    path.iter().min_by(|a, b| {
+                        let d = |q: &[f32; 3]| {
+                            (f64::from(q[0]) - p.pos.x).hypot(f64::from(q[1]) - p.pos.y)
+                        };
+                        d(&a.0).total_cmp(&d(&b.0))
+                    })
                 );
             }
         }

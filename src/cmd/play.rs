@@ -207,24 +207,13 @@ fn recording(game: &Game) -> Result<Vec<u8>, record::RecordError> {
                     .with_radii([rerun::Radius::new_scene_units(0.4 * r as f32)]),
             )
             .map_err(record::rerun_err)?;
-            // The path the cue ball would have taken had the strike been played as meant.
-            let path: Vec<[f32; 3]> = match s
-                .frame
-                .setup(&s.decision.strike)
-                .ok()
-                .and_then(|setup| snooker_engine::simulate(&setup, s.frame.options()).ok())
-            {
-                Some(shot) => {
-                    let cue = s.frame.cue_index().unwrap_or(0);
-                    (0..=200)
-                        .map(|k| {
-                            let t = shot.duration * k as f64 / 200.0;
-                            let p = shot.tracks[cue].state_at(t, &shot.params).pos;
-                            [p.x as f32, p.y as f32, p.z as f32]
-                        })
-                        .collect()
-                }
-                None => Vec::new(),
+            // The path the cue ball would have taken had the strike been played as meant,
+            // drawn as the one played is.
+            let meant = &s.decision.strike;
+            let path: Vec<[f32; 3]> = match (s.frame.cue_index(), s.frame.setup(meant).ok()) {
+                (Some(cue), Some(setup)) => snooker_engine::simulate(&setup, s.frame.options())
+                    .map_or_else(|_| Vec::new(), |shot| cue_way(&shot, cue, meant.speed)),
+                _ => Vec::new(),
             };
             rec.log(
                 "plan/intended",
@@ -237,7 +226,15 @@ fn recording(game: &Game) -> Result<Vec<u8>, record::RecordError> {
         // The cue ball's paths as played, one strip per stroke, shown once the last stroke
         // has ended (points where its way turns, and every 5 cm between).
         if let Some((last, &t_last)) = game.strokes.last().zip(starts.last()) {
-            let strips: Vec<Vec<[f32; 3]>> = game.strokes.iter().map(cue_way).collect();
+            let strips: Vec<Vec<[f32; 3]>> = game
+                .strokes
+                .iter()
+                .map(|s| {
+                    s.frame
+                        .cue_index()
+                        .map_or_else(Vec::new, |cue| cue_way(&s.shot, cue, s.executed.speed))
+                })
+                .collect();
             rec.set_duration_secs(record::TIMELINE, t_last + last.shot.duration);
             rec.log(
                 "plan/played",
@@ -254,13 +251,10 @@ fn recording(game: &Game) -> Result<Vec<u8>, record::RecordError> {
 /// Colour of the cue ball's paths as played, in a recording.
 const PLAYED_COLOR: [u8; 3] = [240, 240, 240];
 
-/// The cue ball's path in stroke `s`: its position at every event it took part in (where its
-/// way turns or curves begin and end) and every 5 cm of its way between (a curve's shape).
-fn cue_way(s: &snooker_player::StrokeRecord) -> Vec<[f32; 3]> {
-    let Some(cue) = s.frame.cue_index() else {
-        return Vec::new();
-    };
-    let shot = &s.shot;
+/// The path of ball `cue` in `shot`, struck at cue speed `speed`: its position at every event
+/// it took part in (where its way turns or curves begin and end) and every 5 cm of its way
+/// between (a curve's shape).
+fn cue_way(shot: &snooker_engine::Shot, cue: usize, speed: f64) -> Vec<[f32; 3]> {
     let track = &shot.tracks[cue];
     let mut times: Vec<f64> = vec![0.0, shot.duration];
     times.extend(
@@ -270,7 +264,7 @@ fn cue_way(s: &snooker_player::StrokeRecord) -> Vec<[f32; 3]> {
             .map(|e| e.t),
     );
     // About 5 cm apart at the cue speed's start.
-    let step = 0.05 / s.executed.speed.max(0.1);
+    let step = 0.05 / speed.max(0.1);
     let mut t = step;
     while t < shot.duration {
         times.push(t);
