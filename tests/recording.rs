@@ -559,7 +559,16 @@ fn cli_writes_a_recording_and_rejects_bad_paths() {
             true,
         ),
         (
-            vec!["--record".into(), y, "--record-rate".into(), "1e9".into()],
+            vec![
+                "--record".into(),
+                y.clone(),
+                "--record-rate".into(),
+                "1e9".into(),
+            ],
+            true,
+        ),
+        (
+            vec!["--record".into(), y, "--record-rate".into(), "1e300".into()],
             true,
         ),
         (vec!["--record-rate".into(), "100".into()], false),
@@ -576,6 +585,8 @@ fn cli_writes_a_recording_and_rejects_bad_paths() {
                 err.starts_with("error: ") && err.trim().lines().count() == 1,
                 "{err}"
             );
+            // A number given is shown as given, not as hundreds of digits.
+            assert!(err.len() < 200, "{err}");
         }
     }
     // Nothing else was written.

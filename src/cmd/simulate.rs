@@ -3,6 +3,7 @@
 
 use super::{bad_input, failed};
 use crate::{output, record};
+use snooker_engine::shown::Shown;
 use snooker_scene::{self as scene, result};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -58,7 +59,7 @@ pub fn run(args: Args) -> ExitCode {
             return bad_input(format!("--record {}: {e}", out.display()));
         }
         if let Err(e) = opts.validate() {
-            return bad_input(format!("--record-rate {}: {e}", opts.rate));
+            return bad_input(format!("--record-rate {}: {e}", Shown(opts.rate)));
         }
     }
     let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
