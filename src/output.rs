@@ -9,6 +9,10 @@ pub enum OutputError {
     /// The path ends without a file name (`..`, `/`).
     #[error("has no file name")]
     NoFileName,
+    /// The path ends with a separator (`out/x.rrd/`): it names a directory, so no file can be
+    /// put there (and Rust's `Path` would drop the separator and take `x.rrd` for the name).
+    #[error("ends with a path separator, which names a directory, not a file")]
+    TrailingSeparator,
     /// An output directory's path is a file.
     #[error("is a file, not a directory")]
     FileNotDirectory,
@@ -23,15 +27,19 @@ pub enum OutputError {
     NotADirectory(std::path::PathBuf),
 }
 
-/// Checks, before any work, that `path` can become an output file: it is not a directory, a
-/// device, a pipe or a socket, and nothing but directories lies on its way (missing directories are created when it is
-/// written).
+/// Checks, before any work, that `path` can become an output file: it is not a directory (nor
+/// ends with a separator), a device, a pipe or a socket, and nothing but directories lies on
+/// its way (missing directories are created when it is written).
 pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     if path.is_dir() {
         return Err(OutputError::Directory);
     }
     if path.file_name().is_none() {
         return Err(OutputError::NoFileName);
+    }
+    let last = path.as_os_str().as_encoded_bytes().last();
+    if last.is_some_and(|&b| std::path::is_separator(char::from(b))) {
+        return Err(OutputError::TrailingSeparator);
     }
     // `metadata` follows links, so a link to a file is a file (and `/dev/stdout` a device).
     if path.exists() && !path.is_file() {

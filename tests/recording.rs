@@ -549,6 +549,12 @@ fn cli_writes_a_recording_and_rejects_bad_paths() {
             true,
         ),
         (vec!["--record".into(), dir.display().to_string()], true),
+        // A path that names a directory by its final separator (refused after the run, and
+        // a temporary file left beside it, before).
+        (
+            vec!["--record".into(), format!("{}/z.rrd/", dir.display())],
+            true,
+        ),
         (
             vec![
                 "--record".into(),
