@@ -424,14 +424,15 @@ fn recording(
         setup.balls[problem.cue].strike(&alt.strike.cue(), &problem.setup.params)?;
         let alt_shot = snooker_engine::simulate(&setup, &problem.options)?;
         let track = &alt_shot.tracks[problem.cue];
-        let n = 200;
+        // Through every turn of its way, as `play --record` draws a path.
+        let times = record::sample::way_times(&alt_shot, problem.cue, alt.strike.speed);
         overlays.push(record::Overlay {
             entity: vec!["plan".into(), format!("alternative{}", k + 1)],
-            points: (0..=n)
-                .map(|i| {
-                    let t = alt_shot.duration * i as f64 / n as f64;
-                    (t, track.state_at(t, &alt_shot.params).pos)
-                })
+            points: times
+                .into_iter()
+                .map(|t| (t, track.state_at(t, &alt_shot.params)))
+                .filter(|(_, st)| st.motion.in_play())
+                .map(|(t, st)| (t, st.pos))
                 .collect(),
             color: ALTERNATIVE_COLOR,
             radius: 0.25 * r,

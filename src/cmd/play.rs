@@ -251,28 +251,11 @@ fn recording(game: &Game) -> Result<Vec<u8>, record::RecordError> {
 /// Colour of the cue ball's paths as played, in a recording.
 const PLAYED_COLOR: [u8; 3] = [240, 240, 240];
 
-/// The path of ball `cue` in `shot`, struck at cue speed `speed`: its position at every event
-/// it took part in (where its way turns or curves begin and end) and every 5 cm of its way
-/// between (a curve's shape).
+/// The path of ball `cue` in `shot`, struck at cue speed `speed`, at
+/// [`record::sample::way_times`], while it is on the table.
 fn cue_way(shot: &snooker_engine::Shot, cue: usize, speed: f64) -> Vec<[f32; 3]> {
     let track = &shot.tracks[cue];
-    let mut times: Vec<f64> = vec![0.0, shot.duration];
-    times.extend(
-        shot.events
-            .iter()
-            .filter(|e| e.balls.contains(&cue))
-            .map(|e| e.t),
-    );
-    // About 5 cm apart at the cue speed's start.
-    let step = 0.05 / speed.max(0.1);
-    let mut t = step;
-    while t < shot.duration {
-        times.push(t);
-        t += step;
-    }
-    times.sort_by(f64::total_cmp);
-    times.dedup();
-    times
+    record::sample::way_times(shot, cue, speed)
         .iter()
         .map(|&t| track.state_at(t, &shot.params))
         .filter(|st| st.motion.in_play())

@@ -5,6 +5,29 @@
 use snooker_engine::sim::Track;
 use snooker_engine::{BallState, Params, Shot};
 
+/// The times to draw ball `ball`'s way in `shot` at, struck at cue speed `speed` (m/s): the
+/// start, the end, every event it took part in (where its way turns, or a curve begins or
+/// ends) and about every 5 cm of its way between (a curve's shape), in time order. A line
+/// through these keeps every corner; evenly spaced times cut them.
+pub fn way_times(shot: &Shot, ball: usize, speed: f64) -> Vec<f64> {
+    let mut times: Vec<f64> = vec![0.0, shot.duration];
+    times.extend(
+        shot.events
+            .iter()
+            .filter(|e| e.balls.contains(&ball))
+            .map(|e| e.t),
+    );
+    let step = 0.05 / speed.max(0.1);
+    let mut t = step;
+    while t < shot.duration {
+        times.push(t);
+        t += step;
+    }
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    times
+}
+
 /// Why a sample was taken.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
