@@ -29,11 +29,14 @@ pub enum FoulReason {
     /// (Section 3 Rule 12(b)(ii); not when the pink and black are the only object balls). An
     /// extension of the contract's list, last so that its reasons keep their order.
     SnookeredByFreeBall,
+    /// A ball the cue ball touched as the stroke began was moved by it: a push stroke
+    /// (Section 3 Rule 8(b) "Touching Ball"; Rule 10). An extension, last in the order.
+    PushStroke,
 }
 
 impl FoulReason {
     /// Every reason, in the contract's order.
-    pub const ALL: [FoulReason; 8] = [
+    pub const ALL: [FoulReason; 9] = [
         FoulReason::NoBallHit,
         FoulReason::FirstHitNotOn,
         FoulReason::BallNotOnPotted,
@@ -42,6 +45,7 @@ impl FoulReason {
         FoulReason::WrongColourPotted,
         FoulReason::TwoColoursPotted,
         FoulReason::SnookeredByFreeBall,
+        FoulReason::PushStroke,
     ];
 
     /// Its name in the referee's JSON.
@@ -55,6 +59,7 @@ impl FoulReason {
             FoulReason::WrongColourPotted => "wrong_colour_potted",
             FoulReason::TwoColoursPotted => "two_colours_potted",
             FoulReason::SnookeredByFreeBall => "snookered_by_free_ball",
+            FoulReason::PushStroke => "push_stroke",
         }
     }
 }
@@ -113,7 +118,8 @@ mod tests {
                 "off_table",
                 "wrong_colour_potted",
                 "two_colours_potted",
-                "snookered_by_free_ball"
+                "snookered_by_free_ball",
+                "push_stroke"
             ]
         );
         assert!(FoulReason::ALL.windows(2).all(|w| w[0] < w[1]));

@@ -288,6 +288,23 @@ impl Frame {
         self.balls.iter().position(|b| b.kind == BallKind::Cue)
     }
 
+    /// The balls the cue ball touches as it lies (centres at most 2R + the engine's
+    /// [`snooker_engine::TOUCH_TOL`] apart): the referee's TOUCHING BALL (WPBSA Section 3 Rule
+    /// 8(a)). Empty with the cue ball in hand.
+    pub fn touching(&self) -> Vec<usize> {
+        let Some(cue) = self.cue_index().filter(|_| !self.state.ball_in_hand) else {
+            return Vec::new();
+        };
+        let c = self.balls[cue].state.pos;
+        let reach = 2.0 * self.params.ball_radius + snooker_engine::TOUCH_TOL;
+        (0..self.balls.len())
+            .filter(|&i| {
+                let p = self.balls[i].state.pos;
+                i != cue && (p.x - c.x).hypot(p.y - c.y) <= reach
+            })
+            .collect()
+    }
+
     /// True when a ball of this colour is on the table.
     pub fn has_colour(&self, c: Colour) -> bool {
         self.balls.iter().any(|b| b.kind == c.kind())

@@ -46,6 +46,17 @@ fn happened(shot: &Shot, cue: usize) -> Happened {
     Happened { first, potted, off }
 }
 
+/// True when the cue ball meets ball `ball` as the stroke starts (within [`SIMULTANEOUS`] of
+/// it): for a ball it touched, the stroke moved it.
+fn moved_at_start(shot: &Shot, cue: usize, ball: usize) -> bool {
+    shot.events.iter().any(|e| {
+        e.kind == EventKind::BallBall
+            && e.t <= SIMULTANEOUS
+            && e.balls.contains(&cue)
+            && e.balls.contains(&ball)
+    })
+}
+
 impl Frame {
     /// Judges `shot`, simulated from this frame (its balls, in order, the cue ball struck:
     /// [`Frame::setup`]), by the rules of snooker. Cheap next to the simulation: no JSON, one
@@ -86,6 +97,13 @@ impl Frame {
         let (potted_on, potted_not_on): (Vec<usize>, Vec<usize>) =
             potted.iter().partition(|&&i| on(i));
 
+        // Touching ball (Section 3 Rule 8): a ball the cue ball touches as it lies must not be
+        // moved by the stroke, or it is a push stroke (8(b)); one that is on, not moved, counts
+        // as hit, so playing away from it is no foul whatever the cue ball meets next (8(c)).
+        let touching = self.touching();
+        let pushed = touching.iter().any(|&i| moved_at_start(shot, cue, i));
+        let deemed_hit = !pushed && touching.iter().any(|&i| on(i));
+
         // Fouls, in the contract's order.
         let mut reasons = Vec::new();
         // With a free ball nominated, the cue ball must meet it first, alone or at the same
@@ -93,9 +111,12 @@ impl Frame {
         let free_missed = self
             .free_ball_nominated()
             .is_some_and(|free| !h.first.iter().any(|&i| kind(i) == free));
-        if h.first.is_empty() {
+        let first_not_on = free_missed || h.first.iter().any(|&i| !on(i));
+        if deemed_hit {
+            // Played away from a touching ball on: it was the ball hit.
+        } else if h.first.is_empty() {
             reasons.push(FoulReason::NoBallHit);
-        } else if free_missed || h.first.iter().any(|&i| !on(i)) {
+        } else if first_not_on {
             reasons.push(FoulReason::FirstHitNotOn);
         }
         let colour_on = s.on != On::Red;
@@ -120,6 +141,9 @@ impl Frame {
         let finals = shot.final_states();
         if self.snookered_by_free_ball(&finals, cue) {
             reasons.push(FoulReason::SnookeredByFreeBall);
+        }
+        if pushed {
+            reasons.push(FoulReason::PushStroke);
         }
         let foul = reasons.first().map(|&reason| Foul {
             reason,

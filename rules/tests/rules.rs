@@ -498,6 +498,29 @@ fn a_free_ball_that_snookers_the_ball_on_is_a_foul_but_for_pink_and_black() {
 }
 
 #[test]
+fn a_touching_ball_must_not_be_moved_and_one_on_counts_as_hit() {
+    // Section 3 Rule 8. Played away from a touching red, meeting nothing: the red counts as
+    // hit (8(c)); the old referee called no_ball_hit.
+    let (f, v) = play("touching_red_played_away");
+    assert_eq!(f.frame.touching().len(), 1);
+    assert!(v.legal(), "{:?}", v.foul);
+    assert_eq!(
+        (v.points, v.scores, v.first_hit.as_deref()),
+        (0, [10, 20], None)
+    );
+    let n = next(&f, &v);
+    assert_eq!((n.state().to_play, n.state().on), (1, On::Red));
+    // Struck into it: a push stroke (8(b)); the old referee called it legal, the red hit.
+    let (_, v) = play("touching_red_pushed");
+    assert_eq!(foul(&v), (FoulReason::PushStroke, 4));
+    assert_eq!(v.scores, [10, 24]);
+    // A touching ball not on does not count as hit (8(d)).
+    let (f, v) = play("touching_black_played_away");
+    assert_eq!(f.frame.touching().len(), 1);
+    assert_eq!(foul(&v), (FoulReason::NoBallHit, 4));
+}
+
+#[test]
 fn a_free_ball_in_the_closing_sequence_scores_the_ball_on_and_it_stays_on() {
     let (f, v) = play("free_ball_closing");
     assert_eq!((v.points, v.scores), (2, [20, 26]));
