@@ -40,21 +40,6 @@ pub fn edge_contacts(cue: Vec3, target: Vec3, radius: f64) -> Option<[Vec3; 2]> 
     Some([1.0, -1.0].map(|side| cue + along * (cos * u + side * sin * n)))
 }
 
-/// True when the cue ball at `cue` can hit both extreme edges of the ball at `target` in
-/// straight lines, none of `obstacles` (centres) in the way.
-pub fn both_edges_clear(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> bool {
-    let Some(contacts) = edge_contacts(cue, target, radius) else {
-        return true;
-    };
-    let cue = Vec3::new(cue.x, cue.y, 0.0);
-    let limit = (2.0 * radius * (1.0 - TOUCH)).powi(2);
-    contacts.iter().all(|&t| {
-        obstacles
-            .iter()
-            .all(|o| segment_distance2(Vec3::new(o.x, o.y, 0.0), cue, t) >= limit)
-    })
-}
-
 /// The indices of `obstacles` (centres) in the way of one extreme edge or the other of the ball
 /// at `target`, struck straight from `cue`.
 fn obstructing(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> Vec<usize> {
@@ -71,6 +56,12 @@ fn obstructing(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> Vec<
                 .any(|&t| segment_distance2(o, cue, t) < limit)
         })
         .collect()
+}
+
+/// True when the cue ball at `cue` can hit both extreme edges of the ball at `target` in
+/// straight lines, none of `obstacles` (centres) in the way.
+pub fn both_edges_clear(cue: Vec3, target: Vec3, obstacles: &[Vec3], radius: f64) -> bool {
+    obstructing(cue, target, obstacles, radius).is_empty()
 }
 
 /// The effective snookering balls (WPBSA Section 2 Rule 17(b), (c)), as indices of `not_on`:
