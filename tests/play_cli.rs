@@ -9,7 +9,6 @@ mod common;
 
 use common::{snooker, temp_dir};
 use serde_json::Value;
-use std::collections::BTreeMap;
 use std::path::Path;
 
 const OPEN: &str = "scenes/frames/open-table.toml";
@@ -314,51 +313,6 @@ fn the_recording_opens_at_the_end_with_the_cue_balls_path_of_every_stroke() {
     check_strokes_in_recording(&bytes, &log);
 }
 
-/// Everything a recording holds, by entity path (without the leading `/`).
-fn decode_recording(bytes: &[u8]) -> BTreeMap<String, Vec<rerun::log::Chunk>> {
-    use rerun::external::re_log_encoding::DecoderApp;
-    use rerun::log::{Chunk, LogMsg};
-    let mut out = BTreeMap::<String, Vec<Chunk>>::new();
-    for msg in DecoderApp::decode_lazy(bytes) {
-        if let LogMsg::ArrowMsg(store, arrow) = msg.expect("a valid .rrd stream")
-            && store.kind() == rerun::StoreKind::Recording
-        {
-            let chunk = Chunk::from_arrow_msg(&arrow).unwrap();
-            let path = chunk.entity_path().to_string();
-            out.entry(path.trim_start_matches('/').into())
-                .or_default()
-                .push(chunk);
-        }
-    }
-    out
-}
-
-/// A component's rows at an entity: (time in ns, values), in time order (rows at one time in
-/// the order logged).
-fn rows_of<C: rerun::Component + Clone>(
-    d: &BTreeMap<String, Vec<rerun::log::Chunk>>,
-    entity: &str,
-    component: rerun::ComponentIdentifier,
-) -> Vec<(i64, Vec<C>)> {
-    let timeline = rerun::TimelineName::from(snooker::record::TIMELINE);
-    let mut out = Vec::new();
-    for chunk in d.get(entity).into_iter().flatten() {
-        let Some(times) = chunk.timelines().get(&timeline) else {
-            continue;
-        };
-        let times = times.times_raw().to_vec();
-        for ((row, t), v) in chunk
-            .row_ids()
-            .zip(times)
-            .zip(chunk.iter_component::<C>(component))
-        {
-            out.push((t, row, v.to_vec()));
-        }
-    }
-    out.sort_by_key(|r| (r.0, r.1));
-    out.into_iter().map(|(t, _, v)| (t, v)).collect()
-}
-
 /// The latest row at or before `t` (what the viewer shows at `t`).
 fn at<C: Clone>(rows: &[(i64, Vec<C>)], t: i64) -> Option<&Vec<C>> {
     rows.iter().rev().find(|r| r.0 <= t).map(|r| &r.1)
@@ -372,15 +326,15 @@ fn at<C: Clone>(rows: &[(i64, Vec<C>)], t: i64) -> Option<&Vec<C>> {
 /// of its cue-ball events; at its end the scoreboard has the referee's scores.
 fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
     use rerun::components::{HalfSize3D, Position3D, Text, Translation3D};
-    let d = decode_recording(bytes);
+    let d = common::decode_recording(bytes);
     let positions = rerun::Points3D::descriptor_positions().component;
     let labels = rerun::Points3D::descriptor_labels().component;
     let translation = rerun::Transform3D::descriptor_translation().component;
     let half_sizes = rerun::Ellipsoids3D::descriptor_half_sizes().component;
-    let targets = rows_of::<Position3D>(&d, "plan/target", positions);
-    let board = rows_of::<Text>(&d, "frame/scoreboard", labels);
+    let targets = common::rows_of::<Position3D>(&d, "plan/target", positions);
+    let board = common::rows_of::<Text>(&d, "frame/scoreboard", labels);
     let strips = rerun::LineStrips3D::descriptor_strips().component;
-    let intended = rows_of::<rerun::components::LineStrip3D>(&d, "plan/intended", strips);
+    let intended = common::rows_of::<rerun::components::LineStrip3D>(&d, "plan/intended", strips);
     assert_eq!(targets.len(), log.len());
     let close = |a: [f32; 3], b: [f64; 3]| {
         a.iter()
@@ -404,8 +358,8 @@ fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
         assert!(shown.starts_with(&want), "stroke {n}: {shown} / {want}");
         for ball in frame.balls() {
             let id = &ball.id;
-            let pos = rows_of::<Translation3D>(&d, &format!("balls/{id}"), translation);
-            let body = rows_of::<HalfSize3D>(&d, &format!("balls/{id}/body"), half_sizes);
+            let pos = common::rows_of::<Translation3D>(&d, &format!("balls/{id}"), translation);
+            let body = common::rows_of::<HalfSize3D>(&d, &format!("balls/{id}/body"), half_sizes);
             let p = at(&pos, *t0).unwrap()[0].0.0;
             let at_start = ball.state.pos;
             assert!(

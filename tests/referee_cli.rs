@@ -7,9 +7,6 @@
 mod common;
 
 use common::{snooker, temp_dir};
-use rerun::external::re_log_encoding::DecoderApp;
-use rerun::log::{Chunk, LogMsg};
-use rerun::{Component, StoreKind};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -105,46 +102,6 @@ fn with_strike(from: &Path, to: &Path, speed: f64, aim: f64) {
     std::fs::write(to, text + &cue).unwrap();
 }
 
-/// Everything a recording holds, by entity path.
-fn decode(bytes: &[u8]) -> std::collections::BTreeMap<String, Vec<Chunk>> {
-    let mut out = std::collections::BTreeMap::<String, Vec<Chunk>>::new();
-    for msg in DecoderApp::decode_lazy(bytes) {
-        if let LogMsg::ArrowMsg(store, arrow) = msg.expect("a valid .rrd stream")
-            && store.kind() == StoreKind::Recording
-        {
-            let chunk = Chunk::from_arrow_msg(&arrow).unwrap();
-            let path = chunk.entity_path().to_string();
-            out.entry(path.trim_start_matches('/').into())
-                .or_default()
-                .push(chunk);
-        }
-    }
-    out
-}
-
-/// A component's rows at an entity: (time in ns, values), in time order.
-fn rows<C: Component + Clone>(
-    d: &std::collections::BTreeMap<String, Vec<Chunk>>,
-    entity: &str,
-    component: rerun::ComponentIdentifier,
-) -> Vec<(i64, Vec<C>)> {
-    let mut out = Vec::new();
-    for chunk in d.get(entity).into_iter().flatten() {
-        let Some(times) = chunk
-            .timelines()
-            .get(&rerun::TimelineName::from(snooker::record::TIMELINE))
-        else {
-            continue;
-        };
-        let times = times.times_raw().to_vec();
-        for (t, v) in times.into_iter().zip(chunk.iter_component::<C>(component)) {
-            out.push((t, v.to_vec()));
-        }
-    }
-    out.sort_by_key(|r| r.0);
-    out
-}
-
 #[test]
 fn three_strokes_chain_through_frame_out_and_play_again_as_one_recorded_sequence() {
     // The README's example.
@@ -207,9 +164,9 @@ fn three_strokes_chain_through_frame_out_and_play_again_as_one_recorded_sequence
     assert_eq!(json(&p("all.json")), r3);
     assert_eq!(std::fs::read_to_string(p("all.toml")).unwrap(), f3);
 
-    let d = decode(&std::fs::read(p("frame.rrd")).unwrap());
+    let d = common::decode_recording(&std::fs::read(p("frame.rrd")).unwrap());
     let labels = rerun::Points3D::descriptor_labels().component;
-    let board = rows::<rerun::components::Text>(&d, "frame/scoreboard", labels);
+    let board = common::rows_of::<rerun::components::Text>(&d, "frame/scoreboard", labels);
     // Before and after each stroke.
     assert_eq!(board.len(), 6, "{board:?}");
     let text: Vec<&str> = board.iter().map(|(_, v)| v[0].as_str()).collect();
@@ -226,7 +183,7 @@ fn three_strokes_chain_through_frame_out_and_play_again_as_one_recorded_sequence
     );
     // One timeline: each stroke starts after the one before has ended.
     assert!(board.windows(2).all(|w| w[0].0 < w[1].0));
-    let calls = rows::<rerun::components::Text>(
+    let calls = common::rows_of::<rerun::components::Text>(
         &d,
         "events/frame",
         rerun::TextLog::descriptor_text().component,
@@ -239,7 +196,7 @@ fn three_strokes_chain_through_frame_out_and_play_again_as_one_recorded_sequence
     );
     // Every ball of the first frame is drawn, red15 among them.
     assert!(d.contains_key("balls/red15"));
-    let pots = rows::<rerun::components::Text>(
+    let pots = common::rows_of::<rerun::components::Text>(
         &d,
         "events/log",
         rerun::TextLog::descriptor_text().component,
