@@ -6,11 +6,31 @@ mod common;
 
 use common::{snooker, temp_dir};
 use serde_json::Value;
+use std::path::Path;
 
 const CH7: &str = "scenes/chapter7-example.toml";
 
 fn json(path: &std::path::Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// `snooker plan SCENE --pot red --pocket top-left --cue-to 1.5,0.5 --samples 4` and `extra`:
+/// the red into the top-left pocket of the tests' small positions, with few noise samples.
+fn plan_red_top_left(scene: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "plan",
+        scene.to_str().unwrap(),
+        "--pot",
+        "red",
+        "--pocket",
+        "top-left",
+        "--cue-to",
+        "1.5,0.5",
+        "--samples",
+        "4",
+    ];
+    args.extend_from_slice(extra);
+    snooker(&args)
 }
 
 #[test]
@@ -101,20 +121,7 @@ fn a_ball_that_cannot_be_potted_exits_1() {
     )
     .unwrap();
     let out = dir.join("plan.json");
-    let o = snooker(&[
-        "plan",
-        scene.to_str().unwrap(),
-        "--pot",
-        "red",
-        "--pocket",
-        "top-left",
-        "--cue-to",
-        "1.5,0.5",
-        "--samples",
-        "4",
-        "--json",
-        out.to_str().unwrap(),
-    ]);
+    let o = plan_red_top_left(&scene, &["--json", out.to_str().unwrap()]);
     assert_eq!(
         o.status.code(),
         Some(1),
@@ -292,18 +299,7 @@ fn a_plan_whose_shots_cannot_finish_says_so() {
          [sim]\nmax_time = 0.2\n",
     )
     .unwrap();
-    let o = snooker(&[
-        "plan",
-        scene.to_str().unwrap(),
-        "--pot",
-        "red",
-        "--pocket",
-        "top-left",
-        "--cue-to",
-        "1.5,0.5",
-        "--samples",
-        "4",
-    ]);
+    let o = plan_red_top_left(&scene, &[]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(
