@@ -280,17 +280,28 @@ fn mix(mut z: u64) -> u64 {
 
 impl Serialize for Noise {
     /// The five standard deviations by name; and `offset`, the plan contract's one standard
-    /// deviation of each tip offset (formats.md, "Plan"), when side and height are equal.
+    /// deviation of the tip offset (formats.md, "Plan"): side's and height's when they are
+    /// equal, else their root mean square (the same mean squared offset of the tip,
+    /// side^2 + height^2), so the contract's key is always there.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let same = self.side == self.height;
-        let mut m = s.serialize_map(Some(if same { 6 } else { 5 }))?;
+        let mut m = s.serialize_map(Some(6))?;
         for c in NoiseComponent::ALL {
             m.serialize_entry(c.name(), &self.get(c))?;
         }
-        if same {
-            m.serialize_entry("offset", &self.side)?;
-        }
+        m.serialize_entry("offset", &self.offset())?;
         m.end()
+    }
+}
+
+impl Noise {
+    /// The one standard deviation of the tip offset the plan contract names (formats.md,
+    /// "Plan"), m: side's when side and height are equal, else their root mean square.
+    pub fn offset(&self) -> f64 {
+        if self.side == self.height {
+            self.side
+        } else {
+            (0.5 * (self.side * self.side + self.height * self.height)).sqrt()
+        }
     }
 }
 
@@ -310,6 +321,26 @@ mod tests {
         for c in NoiseComponent::ALL {
             assert_eq!(NoiseComponent::from_name(c.name()), Some(c));
         }
+    }
+
+    #[test]
+    fn the_contracts_offset_is_always_written() {
+        // formats.md, "Plan": robustness.noise.offset is a contract key; it went missing when
+        // side and height differed.
+        let json = |n: &Noise| serde_json::to_value(n).unwrap();
+        assert_eq!(json(&Noise::STANDARD)["offset"].as_f64(), Some(0.0005));
+        let n = Noise {
+            side: 0.001,
+            ..Noise::STANDARD
+        };
+        let v = json(&n);
+        assert_eq!(v["side"].as_f64(), Some(0.001));
+        assert_eq!(v["height"].as_f64(), Some(0.0005));
+        let rms = v["offset"].as_f64().unwrap();
+        assert!(
+            (rms - (0.5f64 * (1e-6 + 2.5e-7)).sqrt()).abs() < 1e-15,
+            "{rms}"
+        );
     }
 
     #[test]
@@ -362,9 +393,5 @@ mod tests {
             keys,
             ["aim", "elevation", "speed", "side", "height", "offset"]
         );
-        let mut n = Noise::STANDARD;
-        n.side = 0.001;
-        let j = serde_json::to_value(n).unwrap();
-        assert!(j.get("offset").is_none());
     }
 }
