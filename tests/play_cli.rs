@@ -87,6 +87,18 @@ fn every_logged_stroke_replays_through_the_referee() {
             ["pot", "pocket", "kind", "pot_probability", "cue_to"],
             "line {k}"
         );
+        // `via` names what a line goes by: nothing for a direct pot or a safety, a double's
+        // cushions, the one ball of a plant (its `ball`, struck first) or a kiss.
+        let alternatives = line["plan"]["alternatives"].as_array().unwrap();
+        for p in std::iter::once(&line["plan"]).chain(alternatives) {
+            let via = p["via"].as_array().unwrap();
+            match p["kind"].as_str().unwrap() {
+                "direct" | "safety" => assert!(via.is_empty(), "line {k}: {p}"),
+                "double" => assert!(!via.is_empty() && p["ball"] == p["pot"], "line {k}: {p}"),
+                "plant" => assert!(via.len() == 1 && p["ball"] == via[0], "line {k}: {p}"),
+                _ => assert!(via.len() == 1 && p["ball"] == p["pot"], "line {k}: {p}"),
+            }
+        }
         assert!(line["referee"].get("shot").is_none());
         assert_eq!(line["stroke"].as_u64(), Some(k as u64 + 1));
         let file = dir.join(format!("stroke{}.toml", k + 1));

@@ -34,6 +34,31 @@ pub struct Target {
     pub problem: Problem,
 }
 
+impl Target {
+    /// The names of what `line` goes via (the play log's `via`): the ball a plant strikes
+    /// first or a kiss glances off, or the cushions a double's object ball meets, in order;
+    /// none for a direct pot.
+    pub fn via(&self, line: &Line) -> Vec<String> {
+        match line.ball {
+            Some(b) => vec![self.frame.balls()[b].id.clone()],
+            None => line
+                .cushions
+                .iter()
+                .map(|&c| self.frame.table().cushions[c].name.clone())
+                .collect(),
+        }
+    }
+
+    /// The id of the ball the cue ball is sent at first on `line` (the play log's `ball`): a
+    /// plant's first ball, else the ball potted.
+    pub fn first_ball(&self, line: &Line) -> String {
+        match (line.kind, line.ball) {
+            (ShotKind::Plant, Some(b)) => self.frame.balls()[b].id.clone(),
+            _ => self.frame.balls()[self.ball].id.clone(),
+        }
+    }
+}
+
 /// A line to try: its target and a first estimate of its worth (points).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LineCandidate {
@@ -210,5 +235,36 @@ mod tests {
         assert!(!declined.state().free_ball);
         // A colour is nominated as the free ball.
         assert_eq!(nomination(&frame, BallKind::Blue), Some(Colour::Blue));
+    }
+
+    #[test]
+    fn each_lines_via_and_first_ball_name_what_it_goes_by() {
+        let valuer = Valuer::new(&snooker_planner::Noise::STANDARD, &Default::default());
+        let cushions: Vec<String> = {
+            let f = Frame::open_table(15, 1);
+            f.table().cushions.iter().map(|c| c.name.clone()).collect()
+        };
+        let mut seen = [0; 4];
+        for seed in 1..=4 {
+            let frame = Frame::open_table(15, seed);
+            let targets = targets(&frame);
+            for lc in lines(&targets, &valuer) {
+                let t = &targets[lc.target];
+                let pot = t.frame.balls()[t.ball].id.clone();
+                let (via, first) = (t.via(&lc.line), t.first_ball(&lc.line));
+                match lc.line.kind {
+                    ShotKind::Direct => assert!(via.is_empty() && first == pot),
+                    ShotKind::Double => {
+                        assert!(!via.is_empty() && first == pot, "{via:?}");
+                        assert!(via.iter().all(|c| cushions.contains(c)), "{via:?}");
+                    }
+                    ShotKind::Plant => assert!(via == [first.clone()] && first != pot),
+                    ShotKind::Kiss => assert!(via.len() == 1 && via[0] != pot && first == pot),
+                }
+                seen[lc.line.kind as usize] += 1;
+            }
+        }
+        // Every kind was met (else the test shows nothing of it).
+        assert!(seen.iter().all(|&n| n > 0), "{seen:?}");
     }
 }

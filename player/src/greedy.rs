@@ -102,11 +102,11 @@ impl Agent for Greedy {
                 best = Some((
                     p,
                     Considered {
-                        ball: pot.clone(),
+                        ball: t.first_ball(&lc.line),
                         pot,
                         pocket: t.frame.table().pockets[t.pocket].name.clone(),
                         kind: PlanKind::from(lc.line.kind),
-                        via: Vec::new(),
+                        via: t.via(&lc.line),
                         pot_probability: p,
                         cue_to: [trial.cue_final.x, trial.cue_final.y],
                         value: p,

@@ -21,7 +21,7 @@
 //! decision is the same on any machine and thread count.
 
 use crate::agent::{Agent, ChooseError, Context};
-use crate::candidates::{self, Target};
+use crate::candidates;
 use crate::decision::{Considered, Decision, PlanKind};
 use crate::placement::placements;
 use crate::safety::safeties;
@@ -66,18 +66,6 @@ pub(crate) struct Evaluated {
     pub considered: Considered,
 }
 
-/// The names of what `line` goes via.
-fn via(t: &Target, line: &snooker_planner::Line) -> Vec<String> {
-    match line.ball {
-        Some(b) => vec![t.frame.balls()[b].id.clone()],
-        None => line
-            .cushions
-            .iter()
-            .map(|&c| t.frame.table().cushions[c].name.clone())
-            .collect(),
-    }
-}
-
 impl Player {
     /// The pots from `frame` (cue ball placed), evaluated: the deterministic search within
     /// `budget` shots, then the best candidates sampled under noise with `samples_budget`.
@@ -120,17 +108,11 @@ impl Player {
                     nominated: t.nominated,
                     strike: s.trial.cue,
                     considered: Considered {
-                        ball: match lc.line.kind {
-                            snooker_planner::ShotKind::Plant => via(t, &lc.line)
-                                .first()
-                                .cloned()
-                                .unwrap_or_else(|| pot_id.clone()),
-                            _ => pot_id.clone(),
-                        },
+                        ball: t.first_ball(&lc.line),
                         pot: pot_id,
                         pocket: t.frame.table().pockets[t.pocket].name.clone(),
                         kind: PlanKind::from(lc.line.kind),
-                        via: via(t, &lc.line),
+                        via: t.via(&lc.line),
                         pot_probability,
                         cue_to: [s.trial.cue_final.x, s.trial.cue_final.y],
                         value,
