@@ -137,7 +137,7 @@ pub struct LayoutInfo {
 }
 
 /// The scene files built in: name, text, what it shows.
-const SCENES: [(&str, &str, &str); 8] = [
+const SCENES: [(&str, &str, &str); 15] = [
     (
         "cut-30",
         include_str!("../../scenes/cut-30.toml"),
@@ -172,6 +172,41 @@ const SCENES: [(&str, &str, &str); 8] = [
         "chapter7-example",
         include_str!("../../scenes/chapter7-example.toml"),
         "the thesis's planning example (section 7.3.2)",
+    ),
+    (
+        "two-cushion",
+        include_str!("../../scenes/two-cushion.toml"),
+        "the cue ball off two cushions",
+    ),
+    (
+        "cushion-rebound",
+        include_str!("../../scenes/cushion-rebound.toml"),
+        "a ball rolling straight into the top cushion (section 5.1.2)",
+    ),
+    (
+        "table-i-1",
+        include_str!("../../scenes/table-i-1.toml"),
+        "thesis Table I, collision 1, on the open cloth (appendix III)",
+    ),
+    (
+        "table-i-2",
+        include_str!("../../scenes/table-i-2.toml"),
+        "thesis Table I, collision 2, on the open cloth (appendix III)",
+    ),
+    (
+        "table-i-3",
+        include_str!("../../scenes/table-i-3.toml"),
+        "thesis Table I, collision 3, on the open cloth (appendix III)",
+    ),
+    (
+        "table-i-4",
+        include_str!("../../scenes/table-i-4.toml"),
+        "thesis Table I, collision 4, on the open cloth (appendix III)",
+    ),
+    (
+        "table-i-5",
+        include_str!("../../scenes/table-i-5.toml"),
+        "thesis Table I, collision 5, on the open cloth (appendix III)",
     ),
     (
         "break-off-shot",
