@@ -108,6 +108,7 @@ fn a_hidden_slope_is_found_from_files_with_a_full_report() {
     assert_eq!(doc["named"], serde_json::json!(["table_slope"]));
     assert_eq!(doc["unexplained"], false);
     assert!(doc["baseline_gap"]["rms"].as_f64().unwrap() > 0.01);
+    assert!(doc["baseline_gap"]["samples"].as_u64().unwrap() > 100);
     assert!(doc["final_gap"]["rms"].as_f64().unwrap() < 1.5 * 5e-4);
     let step = &doc["steps"][0];
     assert_eq!(step["effect"], "table_slope");
@@ -186,6 +187,12 @@ fn the_thesis_ball_ball_collisions_name_restitution_and_friction() {
     let dir = temp_dir("table-i");
     let doc = workflow(&dir, "data/discrepancy/table-i.toml");
     assert_eq!(doc["named"], serde_json::json!(["ball_friction"]));
+    // Observables only, no tracks: a position gap of 0 is over no samples, and says so (it
+    // read as a perfect fit).
+    for gap in ["baseline_gap", "final_gap"] {
+        assert_eq!(doc[gap]["samples"].as_u64(), Some(0), "{gap}: {}", doc[gap]);
+    }
+    assert_eq!(doc["final_observable_gap"]["samples"].as_u64(), Some(10));
     let before = mean_error(&doc["baseline"], "table-i");
     let after = mean_error(&doc["final"], "table-i");
     assert!((before - 0.064).abs() < 0.002, "{before}");

@@ -243,9 +243,12 @@ pub struct Gap {
     pub rms: f64,
     /// Largest distance.
     pub max: f64,
+    /// How many samples (or observables) it is over: with none, `rms` and `max` are 0 and say
+    /// nothing of the fit.
+    pub samples: usize,
 }
 
-/// The position gap of `m` against its simulated shots (zero without samples).
+/// The position gap of `m` against its simulated shots (zero over zero samples without any).
 pub fn position_gap(m: &Measurement, sims: &[Shot]) -> Gap {
     let (mut sum, mut max, mut n) = (0.0, 0.0f64, 0usize);
     for (shot, sim) in m.shots.iter().zip(sims) {
@@ -260,6 +263,7 @@ pub fn position_gap(m: &Measurement, sims: &[Shot]) -> Gap {
     Gap {
         rms: if n > 0 { (sum / n as f64).sqrt() } else { 0.0 },
         max,
+        samples: n,
     }
 }
 

@@ -227,6 +227,7 @@ fn observable_gap(m: &Measurement, sims: &[snooker_engine::Shot]) -> Gap {
     Gap {
         rms: (d.iter().map(|v| v * v).sum::<f64>() / d.len() as f64).sqrt(),
         max: d.iter().copied().fold(0.0, f64::max),
+        samples: d.len(),
     }
 }
 
