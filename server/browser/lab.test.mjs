@@ -224,9 +224,12 @@ try {
   await page.waitForFunction(() => /plan cancelled/.test(document.getElementById("status").textContent), null, { timeout: 60000 });
   log(await page.textContent("#status"));
   await page.fill("#samples", "64");
+  await page.fill("#alternatives", "1");
   await page.click("#plan");
   await page.waitForSelector("#plan-summary", { timeout: 300000 });
   const plan = await page.evaluate(() => window.lab.plan.result.plan);
+  // The field is read (a layer of the table had its id, and the request sent null).
+  assert.equal(plan.alternatives.length, 1, "one alternative asked for");
   assert.ok(plan.best.potted, "the best shot pots the red");
   const spread = await page.$eval("#spread", (c) => [Number(c.getAttribute("cx")), Number(c.getAttribute("cy")), Number(c.getAttribute("r"))]);
   const rb = plan.best.robustness;
@@ -291,6 +294,14 @@ try {
   await page.fill("#player-seed", "6");
   await page.click("#player-visit");
   await page.waitForSelector("#player-chosen", { timeout: 120000 });
+  // While the visit runs nothing that changes the position or starts other work is offered,
+  // and the table takes no drag (loading a layout mid-stroke once froze the page for good).
+  const locked = await page.evaluate(() =>
+    ["load-layout", "new-frame", "import", "strike", "plan", "play-stroke", "player-visit", "replay"]
+      .filter((id) => !document.getElementById(id).disabled)
+      .concat(window.lab.table.locked ? [] : ["table"]));
+  assert.deepEqual(locked, [], "offered during the visit");
+  assert.equal(await page.evaluate(() => document.getElementById("player-cancel").disabled), false);
   const shown = await page.evaluate(() => {
     const head = document.getElementById("player-chosen").textContent;
     const rows = [...document.querySelectorAll("#player-considered tr[data-row]")].map((tr) => ({
@@ -325,6 +336,9 @@ try {
   await idle();
   const over = await page.textContent("#status");
   assert.ok(/visit over/.test(over), over);
+  const freed = await page.evaluate(() =>
+    ["load-layout", "strike", "plan", "play-stroke"].filter((id) => document.getElementById(id).disabled));
+  assert.deepEqual(freed, [], "still refused after the visit");
   const strokes = Number(/over: (\d+) strokes/.exec(over)[1]);
   await page.waitForFunction((n) => document.querySelectorAll("#strokes li").length >= n, strokes);
   const lines = await page.$$eval("#strokes li", (l) => l.map((x) => x.textContent));

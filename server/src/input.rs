@@ -158,8 +158,11 @@ pub fn frame_toml(text: &str, file: &str, limits: &Limits) -> Result<FrameFile, 
 /// A frame as the page holds it: the frame file's keys as one JSON object (the file
 /// [`snooker_rules::Frame::to_toml`] writes, read as TOML and given as JSON: every number the
 /// same bits).
-pub fn frame_value(frame: &snooker_rules::Frame) -> Result<Value, ApiError> {
-    let text = frame.to_toml(None);
+pub fn frame_value(
+    frame: &snooker_rules::Frame,
+    strike: Option<&snooker_engine::Cue>,
+) -> Result<Value, ApiError> {
+    let text = frame.to_toml(strike);
     let table: toml::Table = toml::from_str(&text)
         .map_err(|e| ApiError::internal(format!("the frame written does not read back: {e}")))?;
     serde_json::to_value(table).map_err(|e| ApiError::internal(e.to_string()))

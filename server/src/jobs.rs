@@ -65,6 +65,8 @@ pub struct Job {
     pub cancel: Cancel,
     created: Instant,
     started: Mutex<Option<Instant>>,
+    /// When it ended (done, failed or cancelled): its time running stops there.
+    ended: Mutex<Option<Instant>>,
     state: Mutex<State>,
     progress: Mutex<Vec<Arc<dyn Progress>>>,
     done_shots: AtomicU64,
@@ -134,9 +136,16 @@ impl Job {
             let mut state = lock(&self.state);
             if matches!(*state, State::Queued) {
                 *state = State::Cancelled(reason);
+                *lock(&self.ended) = Some(Instant::now());
             }
         }
         self.woken.notify_one();
+    }
+
+    /// Ends the job in `state` (done, failed or cancelled), its clock stopped.
+    fn end(&self, state: State) {
+        *lock(&self.ended) = Some(Instant::now());
+        *lock(&self.state) = state;
     }
 
     fn finished(&self) -> bool {
@@ -156,6 +165,8 @@ impl Job {
     pub fn status_since(&self, since: Option<usize>) -> JobStatus {
         let state = lock(&self.state).clone();
         let started = *lock(&self.started);
+        let ended = *lock(&self.ended);
+        let running = matches!(state, State::Running);
         let (name, result, error, reason) = match state {
             State::Queued => ("queued", None, None, None),
             State::Running => ("running", None, None, None),
@@ -173,11 +184,21 @@ impl Job {
             kind: self.kind,
             state: name,
             shots: self.shots(),
-            note: lock(&self.note).clone(),
+            // What it is doing: nothing once it has ended.
+            note: if running {
+                lock(&self.note).clone()
+            } else {
+                String::new()
+            },
             waited: started
+                .or(ended)
                 .map_or(self.created.elapsed(), |s| s - self.created)
                 .as_secs_f64(),
-            elapsed: started.map_or(0.0, |s| s.elapsed().as_secs_f64()),
+            elapsed: started.map_or(0.0, |s| {
+                ended
+                    .map_or(s.elapsed(), |e| e.saturating_duration_since(s))
+                    .as_secs_f64()
+            }),
             result,
             error,
             reason,
@@ -202,7 +223,7 @@ pub struct JobStatus {
     pub note: String,
     /// Time spent waiting for a slot, s.
     pub waited: f64,
-    /// Time running, s.
+    /// Time running, s (to its end once it has ended).
     pub elapsed: f64,
     /// The answer, once done.
     #[serde(skip_serializing_if = "Option::is_none", serialize_with = "shared")]
@@ -297,6 +318,7 @@ impl Jobs {
             cancel: Cancel::new(),
             created: Instant::now(),
             started: Mutex::new(None),
+            ended: Mutex::new(None),
             state: Mutex::new(State::Queued),
             progress: Mutex::new(Vec::new()),
             done_shots: AtomicU64::new(0),
@@ -319,14 +341,14 @@ impl Jobs {
             let slot = match permit {
                 Some(Ok(p)) => Some(p),
                 Some(Err(_)) => {
-                    *lock(&run.state) = State::Failed(ApiError::internal("the job slots closed"));
+                    run.end(State::Failed(ApiError::internal("the job slots closed")));
                     return;
                 }
                 None => None,
             };
             if slot.is_none() || run.cancel.is_cancelled() {
                 let reason = lock(&run.cancel_reason).clone().unwrap_or_default();
-                *lock(&run.state) = State::Cancelled(reason);
+                run.end(State::Cancelled(reason));
                 return;
             }
             *lock(&run.started) = Some(Instant::now());
@@ -358,7 +380,7 @@ impl Jobs {
                     Err(e) => State::Failed(ApiError::internal(format!("the job stopped: {e}"))),
                 }
             };
-            *lock(&run.state) = state;
+            run.end(state);
         });
         Ok(job)
     }

@@ -216,9 +216,23 @@ async fn info(State(lab): Shared) -> Json<Info> {
 #[serde(deny_unknown_fields)]
 struct LayoutQuery {
     #[serde(default)]
-    reds: Option<usize>,
+    reds: Option<String>,
     #[serde(default)]
-    seed: Option<u64>,
+    seed: Option<String>,
+}
+
+/// The whole number of query key `key`, if given: a bad one names its key.
+fn whole<T: std::str::FromStr>(key: &str, v: Option<&str>) -> Result<Option<T>, ApiError> {
+    v.map(|t| {
+        t.parse().map_err(|_| {
+            ApiError::bad(
+                body::REQUEST,
+                key,
+                format!("a whole number (at least 0) is needed, got {t:?}"),
+            )
+        })
+    })
+    .transpose()
 }
 
 async fn layout(
@@ -228,8 +242,10 @@ async fn layout(
 ) -> Result<Json<Position>, ApiError> {
     let Path(name) = name.map_err(|e| ApiError::bad(body::REQUEST, "name", e.body_text()))?;
     let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
+    let reds = whole::<usize>("reds", q.reds.as_deref())?;
+    let seed = whole::<u64>("seed", q.seed.as_deref())?;
     let limits = lab.limits;
-    lab.light(move || position::layout(&name, q.reds, q.seed, &limits))
+    lab.light(move || position::layout(&name, reds, seed, &limits))
         .await
         .map(Json)
 }
@@ -321,11 +337,15 @@ fn attachment(bytes: Vec<u8>, name: &str, ext: &str, kind: &'static str) -> Resp
     h.insert(header::CONTENT_TYPE, HeaderValue::from_static(kind));
     // A scene's name is free text of any length; the file's name keeps its first 100 safe
     // characters (a longer header is refused by common HTTP clients).
-    let stem: String = name
+    let mut stem: String = name
         .chars()
         .filter(|c| c.is_ascii_alphanumeric() || "-_.".contains(*c))
         .take(100)
         .collect();
+    // A name of no safe characters (日本語) gave ".toml", which browsers save as "toml".
+    if stem.trim_matches('.').is_empty() {
+        stem = "shot".to_string();
+    }
     if let Ok(v) = HeaderValue::from_str(&format!("attachment; filename=\"{stem}.{ext}\"")) {
         h.insert(header::CONTENT_DISPOSITION, v);
     }
@@ -459,4 +479,25 @@ async fn job_cancel(
         .ok_or_else(|| ApiError::not_found(format!("no job {id}")))?;
     job.cancel_with("cancelled on request");
     Ok(Json(job.status()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_download_always_has_a_file_name() {
+        let name = |scene: &str| {
+            let r = attachment(Vec::new(), scene, "toml", "application/toml");
+            r.headers()[header::CONTENT_DISPOSITION]
+                .to_str()
+                .unwrap()
+                .to_string()
+        };
+        assert_eq!(name("cut-30"), "attachment; filename=\"cut-30.toml\"");
+        // No safe character: it was ".toml", saved by browsers as "toml".
+        assert_eq!(name("日本語"), "attachment; filename=\"shot.toml\"");
+        assert_eq!(name("..."), "attachment; filename=\"shot.toml\"");
+        assert_eq!(name("a/b c"), "attachment; filename=\"abc.toml\"");
+    }
 }

@@ -106,9 +106,17 @@ pub fn of_scene(checked: &CheckedScene) -> Result<Position, ApiError> {
     })
 }
 
-/// The position of a frame (its strike, if any, dropped: the page sets its own).
+/// The position of a frame, with no strike (the page sets its own).
 pub fn of_frame(frame: &Frame) -> Result<Position, ApiError> {
-    let mut scene = input::frame_value(frame)?;
+    of_frame_with(frame, None)
+}
+
+/// The position of a frame, with `strike` as its scene's `cue` (the strike offered) if given.
+fn of_frame_with(
+    frame: &Frame,
+    strike: Option<&snooker_engine::Cue>,
+) -> Result<Position, ApiError> {
+    let mut scene = input::frame_value(frame, strike)?;
     if let Some(map) = scene.as_object_mut() {
         map.remove("frame");
     }
@@ -120,9 +128,10 @@ pub fn of_frame(frame: &Frame) -> Result<Position, ApiError> {
     })
 }
 
-/// The position of a frame file read (the frame before its strike).
+/// The position of a frame file read: the frame before its strike, and its strike, if it has
+/// one, as the strike offered (as a scene file's is).
 pub fn of_frame_file(file: &FrameFile) -> Result<Position, ApiError> {
-    of_frame(&file.frame)
+    of_frame_with(&file.frame, file.strike.as_ref())
 }
 
 /// A layout the page offers.

@@ -337,6 +337,14 @@ async fn a_plan_is_a_job_that_replays_and_can_be_cancelled() {
     let end = cancel_when_running(&app, v["id"].as_u64().unwrap()).await;
     assert_eq!(end["state"], "cancelled", "{end}");
     assert_eq!(end["reason"], "cancelled on request");
+    // An ended job's clock stops and it says it is doing nothing (its elapsed time grew on
+    // every read, and its note still said what it last did).
+    let id = v["id"].as_u64().unwrap();
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    let (_, later) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
+    assert_eq!(later["elapsed"], end["elapsed"], "{later}");
+    assert_eq!(later["waited"], end["waited"], "{later}");
+    assert_eq!(later["note"], "", "{later}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -688,6 +696,20 @@ async fn a_layout_refuses_options_it_does_not_take() {
     );
     let (s, _) = call(&app, "GET", "/api/layouts/open-table?reds=2&seed=9", None).await;
     assert_eq!(s, StatusCode::OK);
+    // A bad number names its key (the key was empty, the field only in the reason's text).
+    for (q, key) in [
+        ("reds=-1", "reds"),
+        ("seed=x", "seed"),
+        ("reds=2.5", "reds"),
+    ] {
+        let path = format!("/api/layouts/open-table?{q}");
+        let (s, v) = call(&app, "GET", &path, None).await;
+        assert_eq!(
+            (s, &v["key"]),
+            (StatusCode::BAD_REQUEST, &json!(key)),
+            "{q}: {v}"
+        );
+    }
 }
 
 #[tokio::test]
@@ -804,4 +826,30 @@ async fn every_scene_file_is_a_layout_that_loads() {
             "{name}: {pos}"
         );
     }
+}
+
+#[tokio::test]
+async fn a_frame_files_own_strike_is_the_strike_offered() {
+    // A scene file's strike was offered and a frame file's dropped: pasted, a frame played
+    // whatever strike the page held, not the file's (judged otherwise than `snooker referee`).
+    let app = app();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../rules/tests/frames/closing_colour.toml"
+    ))
+    .unwrap();
+    let (s, pos) = call(
+        &app,
+        "POST",
+        "/api/scene/import",
+        Some(json!({"toml": text, "name": "closing_colour.toml"})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK, "{pos}");
+    assert!(pos["frame"].is_object(), "{pos}");
+    let cue = &pos["scene"]["cue"];
+    assert_eq!(cue["ball"], "cue", "{pos}");
+    assert_eq!(cue["speed"].as_f64(), Some(1.5));
+    assert_eq!(cue["aim"].as_f64(), Some(std::f64::consts::FRAC_PI_4));
+    assert_eq!(cue["offset"], json!([0.0, -0.012]));
 }

@@ -24,6 +24,37 @@ class Lab {
     this.play = new PlayPanel(this);
     this.player = new PlayerPanel(this);
     this.animating = false;
+    // The frame of the position has ended (a stroke's verdict said so): no more strokes.
+    this.frameOver = false;
+    // Called when the running animation ends (a stroke's bookkeeping); see stopAnimation.
+    this.after = null;
+    // The shot shown is a stroke already applied: the position is the frame it left.
+    this.shotKept = false;
+  }
+
+  // While a stroke, a visit or a plan runs the page is busy: nothing that changes the
+  // position or starts other work is offered (the table takes no drags), so what arrives is
+  // always drawn on the position it was asked of.
+  lock(on) {
+    this.busy = on;
+    this.table.locked = on;
+    this.refreshControls();
+  }
+
+  // Every button's state from the page's.
+  refreshControls() {
+    const busy = this.busy;
+    const frame = this.position && this.position.frame;
+    const set = (id, disabled) => {
+      $(id).disabled = disabled;
+    };
+    for (const id of ["strike", "load-layout", "new-frame", "upload", "import", "pick", "plan", "paste"]) set(id, busy);
+    set("replay", busy || !this.shot);
+    set("play-stroke", busy || !frame || this.frameOver);
+    set("player-visit", busy || !frame || this.frameOver || !(this.info && this.info.player));
+    set("play-plan", busy || !this.plan.result);
+    set("plan-cancel", !this.plan.running);
+    set("player-cancel", !this.player.running);
   }
 
   status(text, error = false) {
@@ -67,6 +98,8 @@ class Lab {
     delete scene.cue;
     this.position = position;
     this.shot = null;
+    this.shotKept = false;
+    this.frameOver = false;
     this.table.setTable(position.table, scene.balls);
     this.strikes.setBalls(scene.balls.map((b) => b.id));
     if (own && own.ball) {
@@ -79,8 +112,18 @@ class Lab {
     $("position-about").textContent = about;
     $("events").replaceChildren();
     $("summary").textContent = "";
-    $("replay").disabled = true;
+    this.refreshControls();
     this.redrawAim();
+  }
+
+  // After a stroke's next position is set: its shot stays shown (paths, events) and can be
+  // replayed from the frame it was played from.
+  keepShot(view) {
+    this.shot = view;
+    this.shotKept = true;
+    this.table.drawPaths(view.paths);
+    this.listEvents(view.result);
+    this.refreshControls();
   }
 
   redrawAim() {
@@ -88,10 +131,16 @@ class Lab {
     this.table.drawAim(this.ball(this.strike.ball), this.strike.aim, 0.6);
   }
 
+  // Stops the animation; a stroke's bookkeeping waiting for its end is done now, so that
+  // nothing waits for an end that will not come.
   stopAnimation() {
     if (this.stop) this.stop();
     this.stop = null;
     this.animating = false;
+    document.body.dataset.animating = "false";
+    const after = this.after;
+    this.after = null;
+    if (after) after();
   }
 
   // Puts the balls back where the position has them.
@@ -107,22 +156,28 @@ class Lab {
     this.table.clear("aim");
     this.table.drawPaths(view.paths);
     this.listEvents(view.result);
-    this.restBalls();
-    $("replay").disabled = false;
+    this.shotKept = false;
+    this.refreshControls();
     this.run(view, after);
   }
 
   run(view, after) {
-    this.restBalls();
+    this.stopAnimation();
+    // The balls drawn where the shot starts: the position's, or for a stroke kept the frame
+    // it was played from (the drawings only: the table takes the position's back when touched).
+    this.table.setBalls(view.paths.balls.map((b) => ({ id: b.id, kind: b.kind, pos: [b.x[0], b.y[0]] })));
+    const replayOfKept = this.shotKept;
     this.animating = true;
+    this.after = after;
     const speed = Number($("replay-speed").value);
     document.body.dataset.animating = "true";
     this.stop = animate(this.table, view.paths, (t, done) => {
       $("clock").textContent = `t = ${t.toFixed(3)} s`;
       if (done) {
-        this.animating = false;
-        document.body.dataset.animating = "false";
-        if (after) after();
+        this.stop = null;
+        this.stopAnimation();
+        // A stroke replayed ends on the frame it left (the colours respotted).
+        if (replayOfKept) this.restBalls();
       }
     }, speed);
   }
@@ -148,7 +203,7 @@ class Lab {
 
   async strikeNow() {
     if (this.busy) return;
-    this.busy = true;
+    this.lock(true);
     try {
       this.status("simulating…");
       const view = await api.post("/api/simulate", { scene: this.scene() });
@@ -157,7 +212,7 @@ class Lab {
     } catch (e) {
       this.fail(e);
     } finally {
-      this.busy = false;
+      this.lock(false);
     }
   }
 
@@ -205,11 +260,19 @@ class Lab {
 
   wire() {
     const t = this.table;
+    // A touch puts the balls back where the position has them (after a shot they are drawn
+    // where it left them), so that what is grabbed is the position's ball.
+    t.on("touch", () => {
+      if (this.animating) this.stopAnimation();
+      this.restBalls();
+    });
     t.on("dragging", () => this.table.clear("aim"));
     t.on("dropped", (id, at) => {
       const b = this.ball(id);
       b.pos = [at[0], at[1]];
       this.table.clear("paths");
+      // A plan was of the position before the move: it no longer holds.
+      this.plan.clearResult();
       this.redrawAim();
       this.status(`${id} moved to (${at[0].toFixed(4)}, ${at[1].toFixed(4)})`);
     });
@@ -220,7 +283,7 @@ class Lab {
     t.on("aimed", () => this.redrawAim());
     t.on("click", (c) => this.plan.pick(c));
     $("strike").addEventListener("click", () => this.strikeNow());
-    $("replay").addEventListener("click", () => this.shot && this.run(this.shot, null));
+    $("replay").addEventListener("click", () => !this.busy && this.shot && this.run(this.shot, null));
     $("load-layout").addEventListener("click", () => this.loadLayout($("layout").value));
     $("layout").addEventListener("change", () => {
       $("open-table-opts").hidden = $("layout").value !== "open-table";

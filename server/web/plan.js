@@ -13,6 +13,9 @@ export class PlanPanel {
     this.lab = lab;
     this.picking = null;
     this.job = null;
+    // From the click to the plan's end (the job's id comes later).
+    this.running = false;
+    this.cancelRequested = false;
     this.result = null;
   }
 
@@ -28,14 +31,20 @@ export class PlanPanel {
     pk.replaceChildren(...pockets.map((n) => new Option(n, n)));
     if (pockets.includes(keepPk)) pk.value = keepPk;
     // A new position starts a new choice: nothing picked, no target, no plan.
-    this.result = null;
     this.picked = false;
     $("target-x").value = "";
     $("target-y").value = "";
+    this.clearResult();
+  }
+
+  // Forgets the plan shown (its position changed): its table, its paths, its spread.
+  clearResult() {
+    this.result = null;
     $("plan-status").textContent = "";
     $("plan-result").replaceChildren();
-    $("play-plan").disabled = true;
+    if (this.lab.table.layers) this.lab.table.clear("alternatives");
     this.drawChoice();
+    this.lab.refreshControls();
   }
 
   target() {
@@ -94,6 +103,7 @@ export class PlanPanel {
   }
 
   async run() {
+    if (this.lab.busy) return;
     const target = this.target();
     if (!target) return this.lab.status("choose a target for the cue ball first", true);
     const req = {
@@ -105,14 +115,17 @@ export class PlanPanel {
       samples: Number($("samples").value),
       alternatives: Number($("alternatives").value),
     };
-    $("plan").disabled = true;
-    $("plan-cancel").disabled = false;
+    this.running = true;
+    this.cancelRequested = false;
+    this.lab.lock(true);
     const bar = $("plan-progress");
     bar.hidden = false;
     bar.removeAttribute("value");
     try {
       const job = await api.post("/api/plan", req);
       this.job = job.id;
+      // Cancel clicked before the job had its id.
+      if (this.cancelRequested) await api.cancelJob(job.id).catch((e) => this.lab.fail(e));
       const end = await api.waitJob(job.id, (s) => {
         $("plan-status").textContent = `${s.state}: ${s.shots} shots simulated, ${s.elapsed.toFixed(1)} s`;
       });
@@ -128,15 +141,16 @@ export class PlanPanel {
       this.lab.fail(e);
     } finally {
       this.job = null;
+      this.running = false;
       bar.hidden = true;
-      $("plan").disabled = false;
-      $("plan-cancel").disabled = true;
+      this.lab.lock(false);
     }
   }
 
   async cancel() {
-    if (this.job == null) return;
-    await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
+    if (!this.running) return;
+    this.cancelRequested = true;
+    if (this.job != null) await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
   }
 
   // Draws the plan: the best shot's paths, the alternatives' cue ball paths, the spread.
@@ -152,7 +166,7 @@ export class PlanPanel {
     lab.table.drawPaths(view.best.paths);
     lab.listEvents(view.best.result);
     lab.shot = view.best;
-    $("replay").disabled = false;
+    lab.shotKept = false;
     this.drawChoice();
     const p = view.plan;
     const rows = [["best", p.best], ...p.alternatives.map((a, i) => [`alt ${i + 1}`, a])];
@@ -181,12 +195,12 @@ export class PlanPanel {
       `${(p.best.distance * 1000).toFixed(1)} mm from the target; ` +
       `${p.shots_simulated} shots simulated in ${p.wall_time.toFixed(2)} s.`;
     $("plan-result").replaceChildren(head, table);
-    $("play-plan").disabled = false;
+    lab.refreshControls();
   }
 
   // Plays the planned shot: its strike set, the scene simulated again (it replays exactly).
   async playPlanned() {
-    if (!this.result) return;
+    if (!this.result || this.lab.busy) return;
     this.lab.strikes.set(this.result.plan.best.strike);
     await this.lab.strikeNow();
   }

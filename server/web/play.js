@@ -17,7 +17,6 @@ export class PlayPanel {
     const f = position.frame;
     const board = $("scoreboard");
     const nom = $("nominate");
-    $("play-stroke").disabled = !f;
     if (!f) {
       board.textContent = "Not a frame of snooker: load break-off or open-table to play.";
       nom.replaceChildren();
@@ -33,7 +32,11 @@ export class PlayPanel {
     // A free ball may be declined (WPBSA Section 3 Rule 12(b)): the ball on is played.
     if (f.free_ball) nom.prepend(new Option("none: decline the free ball", ""));
     nom.disabled = !needs || noms.length === 0;
-    if (needs && noms.length) nom.value = noms.includes("black") ? "black" : noms[noms.length - 1];
+    if (needs && noms.length) {
+      // The frame's own nomination (a pasted play-log line's), else the black, else the last.
+      const own = f.nominated;
+      nom.value = noms.includes(own) ? own : noms.includes("black") ? "black" : noms[noms.length - 1];
+    }
   }
 
   // The frame of the request: the position, its [frame] table, the strike.
@@ -49,28 +52,33 @@ export class PlayPanel {
     return scene;
   }
 
+  // The stroke: the page stays busy from the request to the end of its animation, when the
+  // frame it leaves becomes the position (a stroke asked meanwhile would be of the frame before).
   async stroke() {
     const lab = this.lab;
-    if (!lab.position.frame || lab.busy) return;
-    lab.busy = true;
+    if (!lab.position.frame || lab.busy || lab.frameOver) return;
+    lab.lock(true);
+    let animated = false;
     try {
       lab.status("playing the stroke…");
       const v = await api.post("/api/frame/stroke", { frame: this.frame() });
       this.strokes += 1;
       this.showVerdict(v.referee);
+      animated = true;
       lab.showShot(v.shot, () => {
         if (v.next) {
           lab.setPosition(v.next, "the frame after the stroke");
-          // The stroke's paths stay drawn over the position it left.
-          lab.table.drawPaths(v.shot.paths);
-          lab.player.takeTurn();
+          // The stroke stays shown over the position it left, and can be replayed.
+          lab.keepShot(v.shot);
         } else this.over(v.referee);
+        lab.lock(false);
+        lab.player.takeTurn();
       });
       lab.status(v.referee.legal ? "legal stroke" : `foul: ${v.referee.foul.reason}`);
     } catch (e) {
       lab.fail(e);
     } finally {
-      lab.busy = false;
+      if (!animated) lab.lock(false);
     }
   }
 
@@ -92,9 +100,11 @@ export class PlayPanel {
     $("strokes").appendChild(li);
   }
 
+  // The frame is over: no more strokes, by hand or by the player, until a new position.
   over(r) {
     $("scoreboard").textContent = `Frame over: player ${r.winner} wins, ${r.scores[0]}–${r.scores[1]}.`;
-    $("play-stroke").disabled = true;
+    this.lab.frameOver = true;
+    this.lab.refreshControls();
   }
 
   wire() {

@@ -48,8 +48,10 @@ export class PlayerPanel {
   constructor(lab) {
     this.lab = lab;
     this.job = null;
+    // From the click to the visit's end (the job's id comes later).
+    this.running = false;
+    this.cancelRequested = false;
     this.parts = [];
-    this.frameOver = false;
   }
 
   setInfo(info) {
@@ -57,12 +59,11 @@ export class PlayerPanel {
     const effort = $("player-effort");
     effort.max = String(l.play_effort);
     if (!effort.value) effort.value = String(l.play_effort_default);
-    $("player-visit").disabled = !info.player;
+    this.lab.refreshControls();
   }
 
-  setPosition(position) {
-    const f = position.frame;
-    $("player-visit").disabled = !f || this.job != null || !(this.lab.info && this.lab.info.player);
+  setPosition() {
+    this.lab.refreshControls();
   }
 
   // The frame the player plays from: the position with its [frame] table; the player places
@@ -79,14 +80,16 @@ export class PlayerPanel {
   // In a frame against the player: its visit, when its side is to play.
   takeTurn() {
     const f = this.lab.position && this.lab.position.frame;
-    if (!$("vs-player").checked || !f || this.job != null) return;
+    if (!$("vs-player").checked || !f || this.running || this.lab.frameOver) return;
     if (f.to_play === Number($("player-side").value)) this.visit();
   }
 
   async visit() {
     const lab = this.lab;
-    if (!lab.position || !lab.position.frame || this.job != null || lab.busy) return;
-    lab.busy = true;
+    if (!lab.position || !lab.position.frame || this.running || lab.busy || lab.frameOver) return;
+    this.running = true;
+    this.cancelRequested = false;
+    lab.lock(true);
     const req = {
       frame: this.frame(),
       effort: Number($("player-effort").value),
@@ -94,19 +97,17 @@ export class PlayerPanel {
       noise: $("player-noise").value,
     };
     const side = lab.position.frame.to_play;
-    $("player-visit").disabled = true;
-    $("player-cancel").disabled = false;
-    $("play-stroke").disabled = true;
     const bar = $("player-progress");
     bar.hidden = false;
     bar.removeAttribute("value");
     this.parts = [];
-    this.frameOver = false;
     let seen = 0;
     let last = null;
     try {
       const job = await api.post("/api/play", req);
       this.job = job.id;
+      // Cancel clicked before the job had its id.
+      if (this.cancelRequested) await api.cancelJob(job.id).catch((e) => lab.fail(e));
       lab.status(`player ${side}'s visit: seed ${req.seed}, effort ${req.effort}, noise ${req.noise}`);
       for (;;) {
         const s = await api.get(`/api/jobs/${job.id}?since=${seen}`);
@@ -141,20 +142,17 @@ export class PlayerPanel {
       lab.fail(e);
     } finally {
       this.job = null;
+      this.running = false;
       bar.hidden = true;
-      $("player-cancel").disabled = true;
-      lab.busy = false;
       // The hand strokes again, unless the frame is over (the scoreboard says who won).
-      if (lab.position && !this.frameOver) {
-        $("player-visit").disabled = !lab.position.frame;
-        lab.play.setPosition(lab.position);
-      }
+      lab.lock(false);
     }
   }
 
   async cancel() {
-    if (this.job == null) return;
-    await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
+    if (!this.running) return;
+    this.cancelRequested = true;
+    if (this.job != null) await api.cancelJob(this.job).catch((e) => this.lab.fail(e));
   }
 
   // One stroke of the player: the frame it was played from (the cue ball where it placed it),
@@ -163,8 +161,6 @@ export class PlayerPanel {
     const lab = this.lab;
     return new Promise((done) => {
       lab.setPosition(part.before, `the player's stroke ${part.number}`);
-      $("player-visit").disabled = true;
-      $("play-stroke").disabled = true;
       this.reasoning(part);
       const to = part.decision.plan.cue_to;
       const R = lab.table.view.ball_radius;
@@ -173,12 +169,10 @@ export class PlayerPanel {
         lab.play.showVerdict(part.referee, `Player ${part.player}'s stroke ${part.number} (the player)`);
         if (part.next) {
           lab.setPosition(part.next, `after the player's stroke ${part.number}`);
-          lab.table.drawPaths(part.shot.paths);
+          lab.keepShot(part.shot);
         } else {
-          this.frameOver = true;
           lab.play.over(part.referee);
         }
-        $("play-stroke").disabled = true;
         done();
       });
     });

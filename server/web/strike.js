@@ -77,6 +77,8 @@ export class StrikeControls {
       offset: [strike.offset[0], strike.offset[1]],
       elevation: strike.elevation,
     };
+    // The selector shows the ball struck (a file's strike may be on another ball).
+    if ([...this.$ball.options].some((o) => o.value === strike.ball)) this.$ball.value = strike.ball;
     this.show();
     this.lab.redrawAim();
   }

@@ -39,6 +39,7 @@ export class Table {
     this.balls = [];
     this.frame = null;
     this.pointer = null;
+    this.locked = false;
     svg.addEventListener("pointerdown", (e) => this.down(e));
     svg.addEventListener("pointermove", (e) => this.move(e));
     svg.addEventListener("pointerup", (e) => this.up(e));
@@ -113,7 +114,7 @@ export class Table {
     }
     this.layers = {
       marks: el("g", { id: "marks" }, g),
-      alternatives: el("g", { id: "alternatives" }, g),
+      alternatives: el("g", { id: "alt-paths" }, g),
       paths: el("g", { id: "paths" }, g),
       aim: el("g", { id: "aim-layer" }, g),
       balls: el("g", { id: "balls" }, g),
@@ -183,7 +184,9 @@ export class Table {
   }
 
   down(e) {
-    if (!this.view || e.button !== 0) return;
+    // Locked while the page is busy: the position must stay the one asked of.
+    if (!this.view || e.button !== 0 || this.locked) return;
+    this.emit("touch");
     const at = this.point(e);
     const ball = this.ballAt(at);
     this.pointer = { start: at, ball, moved: false, id: e.pointerId };
