@@ -256,6 +256,11 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
         (format!("{ok} --cue-to 1,1 --noise aim=x"), "--noise"),
         (format!("{ok} --cue-to 1,1 --kinds direct,bank"), "--kinds"),
         (format!("{ok} --cue-to 1,1 --noise blur=0.1"), "--noise"),
+        // usize::MAX overflowed the search's count (a panic in a debug build).
+        (
+            format!("{ok} --cue-to 1,1 --alternatives 18446744073709551615"),
+            "--alternatives",
+        ),
         (format!("{ok} --cue-to 1,1 --noise standard*-1"), "--noise"),
         // The old spelling: speed as a fraction beside one offset is refused, not misread.
         (

@@ -164,6 +164,8 @@ fn bad_input_exits_2_with_one_message_and_writes_nothing() {
         (vec!["--noise", "loud"], "--noise"),
         (vec!["--noise", "aim=0.002,speed=0.02,offset=0.001"], "m/s"),
         (vec!["--effort", "0"], "--effort"),
+        // A safety's samples asked for more memory than exists (a panic).
+        (vec!["--effort", "18446744073709551615"], "--effort"),
         (vec!["--opponent", "shark"], "--opponent"),
         (vec!["--visit", "--frame"], "--frame"),
         // rayon starts every thread asked for: 100,000 took minutes before this bound.

@@ -27,6 +27,8 @@ pub enum RequestField {
     Tolerance,
     /// [`Request::samples`].
     Samples,
+    /// [`Request::alternatives`].
+    Alternatives,
     /// One interval of [`Request::bounds`].
     Bounds(StrikeVariable),
     /// One standard deviation of [`Request::noise`].
@@ -46,6 +48,7 @@ impl std::fmt::Display for RequestField {
             RequestField::Target => f.write_str("target"),
             RequestField::Tolerance => f.write_str("tolerance"),
             RequestField::Samples => f.write_str("samples"),
+            RequestField::Alternatives => f.write_str("alternatives"),
             RequestField::Bounds(v) => write!(f, "bounds.{}", v.name()),
             RequestField::Noise(c) => write!(f, "noise.{}", c.name()),
             RequestField::Kinds => f.write_str("kinds"),
@@ -259,6 +262,10 @@ impl Bounds {
 /// probability to a few parts in ten thousand, and one record each held in memory at once.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
+/// Most alternatives a request may ask for ([`Request::alternatives`]): each is a shot kept
+/// and sampled; a count past this is a typo (`usize::MAX` overflowed the search's count).
+pub const MAX_ALTERNATIVES: usize = 1000;
+
 /// A planning request, by name (as the command takes it).
 #[derive(Debug, Clone)]
 pub struct Request {
@@ -431,6 +438,15 @@ impl Problem {
             return Err(bad(
                 RequestField::Samples,
                 format!("at most {MAX_SAMPLES} samples, got {}", request.samples),
+            ));
+        }
+        if request.alternatives > MAX_ALTERNATIVES {
+            return Err(bad(
+                RequestField::Alternatives,
+                format!(
+                    "at most {MAX_ALTERNATIVES} alternatives, got {}",
+                    request.alternatives
+                ),
             ));
         }
         request.bounds.check(&p)?;

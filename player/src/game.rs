@@ -13,6 +13,48 @@ use std::time::Instant;
 pub const DEFAULT_EFFORT: u64 = 4000;
 /// The default stroke cap of a frame.
 pub const DEFAULT_MAX_STROKES: usize = 300;
+/// Most effort a stroke may be given, simulated shots: minutes a stroke on two cores; a
+/// count past this is a typo (u64::MAX asked a safety's samples of more memory than exists).
+pub const MAX_EFFORT: u64 = 10_000_000;
+
+/// An option of [`PlayOptions`] out of its range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{key}: {reason}")]
+pub struct OptionsError {
+    /// The option: `effort`, `max_strokes` or `noise.COMPONENT`.
+    pub key: String,
+    /// Why.
+    pub reason: String,
+}
+
+impl PlayOptions {
+    /// Checks the options before any work: an effort of 1 to [`MAX_EFFORT`] shots, at least
+    /// one stroke, and every standard deviation of the noise finite and not negative.
+    pub fn check(&self) -> Result<(), OptionsError> {
+        let fail = |key: &str, reason: String| OptionsError {
+            key: key.to_string(),
+            reason,
+        };
+        if !(1..=MAX_EFFORT).contains(&self.effort) {
+            return Err(fail(
+                "effort",
+                format!(
+                    "1 to {MAX_EFFORT} simulated shots per stroke, got {}",
+                    self.effort
+                ),
+            ));
+        }
+        if self.max_strokes == 0 {
+            return Err(fail("max_strokes", "at least 1".into()));
+        }
+        match self.noise.check() {
+            Err(snooker_planner::PlanError::BadInput { field, reason }) => {
+                Err(fail(&field.to_string(), reason))
+            }
+            _ => Ok(()),
+        }
+    }
+}
 
 /// How long to play.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,6 +159,9 @@ impl Game {
 /// Why play stopped short.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PlayError {
+    /// An option out of its range (nothing was played).
+    #[error(transparent)]
+    Options(#[from] OptionsError),
     /// No stroke could be chosen.
     #[error("stroke {stroke}: {source}")]
     Choose {
@@ -166,6 +211,7 @@ pub fn play(
     opts: &PlayOptions,
     mut on_stroke: impl FnMut(&StrokeRecord),
 ) -> Result<Game, PlayError> {
+    opts.check()?;
     let mut frame = frame.clone();
     let first = frame.state().to_play;
     let mut strokes = Vec::new();

@@ -269,6 +269,7 @@ fn argument(field: RequestField) -> String {
         RequestField::Target => "cue_to".into(),
         RequestField::Tolerance => "tolerance".into(),
         RequestField::Samples => "samples".into(),
+        RequestField::Alternatives => "alternatives".into(),
         RequestField::Bounds(v) => format!("bounds['{}']", v.name()),
         RequestField::Noise(c) => format!("noise['{}']", c.name()),
         RequestField::Kinds => "kinds".into(),

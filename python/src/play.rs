@@ -53,6 +53,18 @@ fn positive(v: u64, what: &str) -> PyResult<u64> {
     }
 }
 
+/// A stroke's effort: 1 to [`snooker_player::game::MAX_EFFORT`] simulated shots.
+fn effort_of(v: u64) -> PyResult<u64> {
+    let max = snooker_player::game::MAX_EFFORT;
+    if (1..=max).contains(&v) {
+        Ok(v)
+    } else {
+        Err(PyValueError::new_err(format!(
+            "effort: 1 to {max} simulated shots per stroke, got {v}"
+        )))
+    }
+}
+
 /// Plays from `frame` as `snooker play` does: `agent` at the table (and `opponent` for the
 /// other side in a frame), every stroke with the execution noise added, judged by the rules,
 /// until the visit ends (`visit`) or the frame; the play log's lines as Python values.
@@ -75,11 +87,13 @@ pub fn play<'py>(
     let opts = PlayOptions {
         noise: self::noise(noise.unwrap_or_default())?,
         seed,
-        effort: positive(effort, "effort")?,
+        effort: effort_of(effort)?,
         until: if visit { Until::Visit } else { Until::Frame },
         max_strokes: positive(max_strokes as u64, "max_strokes")? as usize,
         watch: Default::default(),
     };
+    opts.check()
+        .map_err(|e| PyValueError::new_err(format!("{}: {}", e.key, e.reason)))?;
     let me = self::agent(agent, "agent")?;
     let other = self::agent(opponent, "opponent")?;
     let frame = frame.0.clone();
@@ -130,7 +144,7 @@ pub fn choose<'py>(
         noise: self::noise(noise.unwrap_or_default())?,
         seed,
         stroke,
-        effort: positive(effort, "effort")?,
+        effort: effort_of(effort)?,
         watch: Default::default(),
     };
     let who = self::agent(agent, "agent")?;

@@ -122,6 +122,12 @@ def test_plan_refuses_a_count_or_seed_out_of_range_naming_it(arg, value):
         plan(**{arg: value})
 
 
+def test_plan_refuses_alternatives_past_its_bound():
+    # Before: usize::MAX overflowed the search's count.
+    with pytest.raises(ValueError, match="^alternatives: at most 1000"):
+        plan(alternatives=2**64 - 1)
+
+
 @pytest.mark.parametrize("arg, value", [("samples", 2.5), ("seed", 1.5), ("alternatives", True)])
 def test_plan_refuses_a_count_or_seed_that_is_not_a_whole_number(arg, value):
     # Before: 2.5 samples were 2, seed 1.5 was seed 1, without a word.
@@ -134,6 +140,8 @@ def test_plan_refuses_a_count_or_seed_that_is_not_a_whole_number(arg, value):
     ("play", "max_strokes", -1, ValueError), ("play", "effort", 1e3, TypeError),
     ("choose", "seed", 2**64, ValueError), ("choose", "stroke", -1, ValueError),
     ("choose", "effort", 0.5, TypeError),
+    # A safety's samples asked for more memory than exists (a panic).
+    ("play", "effort", 2**64 - 1, ValueError), ("choose", "effort", 2**64 - 1, ValueError),
 ])
 def test_play_and_choose_refuse_bad_counts_and_seeds_naming_them(call, arg, value, error):
     # Before: OverflowError naming nothing; effort=0.5 became 0 ("effort: must be at least 1").

@@ -109,6 +109,7 @@ fn flag(field: RequestField) -> String {
         RequestField::Target => "--cue-to".into(),
         RequestField::Tolerance => "--tolerance".into(),
         RequestField::Samples => "--samples".into(),
+        RequestField::Alternatives => "--alternatives".into(),
         RequestField::Bounds(v) => format!("--bounds {}", v.name()),
         RequestField::Noise(c) => format!("--noise {}", c.name()),
         RequestField::Kinds => "--kinds".into(),

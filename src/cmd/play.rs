@@ -277,12 +277,6 @@ pub fn run(args: Args) -> ExitCode {
         Ok(n) => n,
         Err(e) => return bad_input(e),
     };
-    if args.effort == 0 {
-        return bad_input("--effort: at least 1 simulated shot per stroke");
-    }
-    if args.max_strokes == 0 {
-        return bad_input("--max-strokes: at least 1");
-    }
     let opponent: &dyn Agent = match args.opponent.as_str() {
         "player" => &Player,
         "greedy" => &Greedy,
@@ -317,6 +311,14 @@ pub fn run(args: Args) -> ExitCode {
         max_strokes: args.max_strokes,
         watch: Default::default(),
     };
+    if let Err(e) = opts.check() {
+        let flag = match e.key.as_str() {
+            "effort" => "--effort",
+            "max_strokes" => "--max-strokes",
+            _ => "--noise",
+        };
+        return bad_input(format!("{flag}: {}", e.reason));
+    }
     // The batch's bound: rayon starts every thread asked for (100,000 took minutes).
     if let Some(Err(e)) = args.threads.map(snooker_batch::run::check_threads) {
         return bad_input(format!("--threads {}: {}", e.threads, e.reason));
