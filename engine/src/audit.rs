@@ -88,11 +88,19 @@ pub fn positions(table: &Table, shot: &Shot) -> Vec<Violation> {
 
 /// Samples every ball of `shot` every `dt` seconds and just before and after every event,
 /// measuring pairwise overlap and checking that balls in play stay on the table.
+///
+/// At most 10^7 steps: a smaller `dt` (zero, negative or NaN included) is taken as the
+/// duration over 10^7 (a zero `dt` asked for an endless list of times).
 pub fn sweep(setup: &Setup, shot: &Shot, dt: f64) -> Sweep {
     let p = &shot.params;
     let r = p.ball_radius;
     let mut times: Vec<f64> = Vec::new();
-    let n = (shot.duration / dt).ceil() as usize;
+    let dt = dt.max(shot.duration / 1e7);
+    let n = if dt > 0.0 {
+        (shot.duration / dt).ceil() as usize
+    } else {
+        0
+    };
     times.extend((0..=n).map(|k| (k as f64 * dt).min(shot.duration)));
     for e in &shot.events {
         for d in [-1e-7, -1e-9, 0.0, 1e-9, 1e-7] {

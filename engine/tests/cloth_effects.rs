@@ -303,3 +303,32 @@ proptest! {
         common::check_shot(&setup, &shot);
     }
 }
+
+#[test]
+fn the_audits_sweep_takes_a_step_of_zero_as_its_finest() {
+    // A zero dt asked for an endless list of sample times (a capacity overflow).
+    let p = Params::default();
+    let shot = run(
+        Table::open(),
+        p,
+        &[rolling(0.0, 0.0, Vec3::new(0.5, 0.0, 0.0), &p)],
+    );
+    let setup = Setup {
+        table: Table::open(),
+        params: p,
+        models: Models::default(),
+        balls: vec![Ball {
+            id: "cue".into(),
+            kind: BallKind::Cue,
+            state: shot.tracks[0].segments[0].state,
+        }],
+    };
+    for dt in [0.0, -1.0, f64::NAN] {
+        let s = snooker_engine::audit::sweep(&setup, &shot, dt);
+        assert!(
+            s.samples > 0 && s.samples <= 10_000_100,
+            "{dt}: {}",
+            s.samples
+        );
+    }
+}

@@ -49,7 +49,10 @@ impl TheD {
     /// Points of the D on a square grid `step` apart, the centre among them (z = 0), lazily:
     /// row by row from the baulk line back, each row from the centre line outwards
     /// alternately, so that a search stopping at its first success tries the middle first.
+    /// A step below a thousandth of the radius (zero, negative or NaN: no grid at all) is
+    /// taken as that thousandth (a zero step overflowed the grid's count).
     pub fn grid(&self, step: f64) -> impl Iterator<Item = Vec3> + '_ {
+        let step = step.max(self.radius / 1000.0);
         let n = (self.radius / step).floor() as i64;
         (0..=n)
             .flat_map(move |i| {
@@ -126,6 +129,10 @@ mod tests {
         // pi r^2 / 2 = 0.1339 m^2: about 1339 points a centimetre apart.
         assert!(g.len() > 1300 && g.len() < 1380, "{}", g.len());
         assert_eq!(g[0], d.centre);
+        // No step (zero, negative, NaN) is the finest grid, not an overflow.
+        for step in [0.0, -1.0, f64::NAN] {
+            assert_eq!(d.grid(step).next(), Some(d.centre), "{step}");
+        }
     }
 
     #[test]

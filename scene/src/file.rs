@@ -118,10 +118,14 @@ impl SceneFile {
         self
     }
 
-    /// The scene with parameter `name` (a [`PARAMS`] name) set to `value`; an unknown name is
-    /// refused by [`SceneFile::build`], naming its key.
+    /// The scene with parameter `name` (a [`PARAMS`] name) set to `value` (replacing a value
+    /// set before: the file written has each key once); an unknown name is refused by
+    /// [`SceneFile::build`], naming its key.
     pub fn with_param(mut self, name: &'static str, value: f64) -> SceneFile {
-        self.params.0.push((name, value));
+        match self.params.0.iter_mut().find(|(n, _)| *n == name) {
+            Some(p) => p.1 = value,
+            None => self.params.0.push((name, value)),
+        }
         self
     }
 

@@ -105,5 +105,14 @@ mod tests {
             .build("built")
             .unwrap_err();
         assert_eq!(e.key, "params.mu_rol");
+        // A parameter set twice is the last value, written once (it was written twice, and
+        // the file read back refused the duplicate key).
+        let scene = SceneFile::new()
+            .with_ball(BallSpec::at("cue", [1.0, 1.0]))
+            .with_param("mu_roll", 0.01)
+            .with_param("mu_roll", 0.02);
+        let read = crate::parse(&scene.to_toml(), "twice.toml").unwrap();
+        assert_eq!(read.setup.params.mu_roll, 0.02);
+        assert_eq!(read.setup, scene.build("built").unwrap().setup);
     }
 }
