@@ -313,16 +313,7 @@ fn the_audits_sweep_takes_a_step_of_zero_as_its_finest() {
         p,
         &[rolling(0.0, 0.0, Vec3::new(0.5, 0.0, 0.0), &p)],
     );
-    let setup = Setup {
-        table: Table::open(),
-        params: p,
-        models: Models::default(),
-        balls: vec![Ball {
-            id: "cue".into(),
-            kind: BallKind::Cue,
-            state: shot.tracks[0].segments[0].state,
-        }],
-    };
+    let setup = common::one_ball_setup(shot.tracks[0].segments[0].state, p);
     for dt in [0.0, -1.0, f64::NAN] {
         let s = snooker_engine::audit::sweep(&setup, &shot, dt);
         assert!(
