@@ -148,35 +148,20 @@ fn a_blocked_pot_is_planned_as_another_kind_and_replays() {
         dir.join("planned.toml"),
         dir.join("r.json"),
     );
-    let args = |kinds: &str| -> Vec<String> {
-        [
-            "plan",
-            scene.to_str().unwrap(),
-            "--pot",
-            "red",
-            "--pocket",
-            "top-left",
-            "--cue-to",
-            "1.5,0.5",
+    let run = |kinds: &str| {
+        let (plan, out) = (plan.to_str().unwrap(), out.to_str().unwrap());
+        let extra = [
             "--tolerance",
             "0.005",
-            "--samples",
-            "4",
             "--alternatives",
             "0",
             "--kinds",
             kinds,
-            "--json",
-            plan.to_str().unwrap(),
-            "--scene-out",
-            out.to_str().unwrap(),
-        ]
-        .map(String::from)
-        .to_vec()
-    };
-    let run = |kinds: &str| {
-        let a = args(kinds);
-        snooker(&a.iter().map(String::as_str).collect::<Vec<_>>())
+        ];
+        plan_red_top_left(
+            &scene,
+            &[&extra[..], &["--json", plan, "--scene-out", out]].concat(),
+        )
     };
     let o = run("direct");
     assert_eq!(
