@@ -298,3 +298,31 @@ fn a_plan_whose_shots_cannot_finish_says_so() {
         "{err}"
     );
 }
+
+#[test]
+fn the_contracts_noise_offset_is_written_when_side_and_height_differ() {
+    // formats.md, "Plan": robustness.noise.offset is a contract key; it was left out whenever
+    // the side and height noise differed. Read as an outside script would.
+    let dir = temp_dir("plan-offset");
+    let (scene, plan) = (dir.join("s.toml"), dir.join("plan.json"));
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}]\n",
+    )
+    .unwrap();
+    let noise = "standard,side=0.001";
+    let o = plan_red_top_left(
+        &scene,
+        &["--noise", noise, "--json", plan.to_str().unwrap()],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let p = json(&plan);
+    let alternatives = p["alternatives"].as_array().unwrap();
+    for shot in std::iter::once(&p["best"]).chain(alternatives) {
+        let n = &shot["robustness"]["noise"];
+        let (side, height) = (n["side"].as_f64().unwrap(), n["height"].as_f64().unwrap());
+        assert_eq!((side, height), (0.001, 0.0005), "{n}");
+        let rms = (0.5 * (side * side + height * height)).sqrt();
+        assert_eq!(n["offset"].as_f64(), Some(rms), "{n}");
+    }
+}
