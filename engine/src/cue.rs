@@ -65,7 +65,8 @@ pub struct Strike {
 /// Why a strike cannot be played.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CueError {
-    /// The `[cue]` key at fault.
+    /// The `[cue]` key at fault; "params" or "ball" when the parameters or the struck ball's
+    /// state given to [`strike`] are at fault instead.
     pub key: &'static str,
     /// Why.
     pub reason: String,
@@ -120,6 +121,20 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
             Err(err(key, format!("must be a finite number, got {v}")))
         }
     };
+    // A caller's own parameters and ball are checked too: a scene's were checked as it was
+    // read, but a strike built in code would otherwise turn a NaN into the ball's motion.
+    if let Err(e) = p.validate() {
+        return Err(err("params", format!("{}: {}", e.name, e.reason)));
+    }
+    let state_finite = [ball.pos, ball.vel, ball.spin]
+        .iter()
+        .all(|v| v.iter().all(|x| x.is_finite()));
+    if !state_finite {
+        return Err(err(
+            "ball",
+            "the struck ball's position, velocity and spin must be finite".into(),
+        ));
+    }
     finite("speed", cue.speed)?;
     finite("aim", cue.aim)?;
     finite("offset", cue.offset[0])?;

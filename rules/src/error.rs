@@ -64,6 +64,18 @@ pub enum Problem {
         /// Its id.
         id: String,
     },
+    /// A ball whose centre is not a radius above the cloth: a stroke starts with every ball
+    /// resting on it.
+    #[error("ball \"{id}\" is {height} m off the cloth: a stroke is played with every ball on it")]
+    OffTheCloth {
+        /// Its id.
+        id: String,
+        /// Its centre's height above a ball resting on the cloth, m.
+        height: f64,
+    },
+    /// Limits of the simulation that cannot be used ([`snooker_engine::SimOptions::validate`]).
+    #[error("{0}")]
+    Limits(String),
     /// A horizon would stop the shot before the balls rest.
     #[error("a stroke is judged once every ball has stopped: a frame takes no horizon")]
     Horizon,

@@ -55,9 +55,10 @@ impl Frame {
     /// colours, each colour and the cue ball once, all at rest; the balls as `state.on` says
     /// (reds on: a red and every colour on the table; a closing colour on: no red, that colour
     /// and every higher one, no lower one); a nomination that can be played; a cue ball on the
-    /// table, or in hand and (if placed) in the D touching no ball. Ball positions are checked
-    /// by the engine (on the cloth, no overlaps) when a strike is played. Errors name the key
-    /// (`balls[i]` by index into `balls`).
+    /// table, or in hand and (if placed) in the D touching no ball; every ball on the cloth
+    /// (its centre a radius above it); the simulation's limits valid ([`SimOptions::validate`]).
+    /// Positions in plan are checked by the engine (on the playing area, no overlaps) when a
+    /// strike is played. Errors name the key (`balls[i]` by index into `balls`).
     pub fn new(
         name: impl Into<String>,
         table: Table,
@@ -74,6 +75,13 @@ impl Frame {
         if options.horizon.is_some() {
             return Err(err(Key::Other("sim.horizon"), Problem::Horizon));
         }
+        options.validate().map_err(|e| {
+            let key = match e.field.as_str() {
+                "options.max_events" => "sim.max_events",
+                _ => "sim.max_time",
+            };
+            err(Key::Other(key), Problem::Limits(e.reason))
+        })?;
         let frame = Frame {
             name: name.into(),
             table,
@@ -118,6 +126,17 @@ impl Frame {
                 }
                 Role::Colour(c) => colours[c as usize] = true,
                 Role::Red => {}
+            }
+            // At rest means on the cloth too: a ball above it would start the stroke falling.
+            let height = b.state.pos.z - self.params.ball_radius;
+            if height.is_nan() || height.abs() > snooker_engine::motion::ON_CLOTH {
+                return Err(err(
+                    Key::Ball(i, "pos"),
+                    Problem::OffTheCloth {
+                        id: b.id.clone(),
+                        height,
+                    },
+                ));
             }
             for (field, v) in [("vel", b.state.vel), ("spin", b.state.spin)] {
                 if v != Vec3::zeros() {

@@ -305,3 +305,35 @@ fn a_layout_ball_is_named_as_the_scene_crate_names_it() {
     let e = err("layout = \"break-off\"\n[frame]\non = \"yellow\"\n");
     assert_eq!(e.key, "frame.on", "{e}");
 }
+
+#[test]
+fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
+    // A file gives positions in plan and its limits are checked as it is read; `Frame::new`
+    // took a ball floating above the cloth, and a NaN max_time, from a Rust caller.
+    let read = snooker_rules::parse(&frame("on = \"red\"", &red_and_cue()), "ok.toml")
+        .unwrap()
+        .frame;
+    let rebuild = |balls: Vec<snooker_engine::Ball>, options: snooker_engine::SimOptions| {
+        snooker_rules::Frame::new(
+            read.name(),
+            read.table().clone(),
+            *read.params(),
+            *read.models(),
+            options,
+            balls,
+            *read.state(),
+        )
+    };
+    assert!(rebuild(read.balls().to_vec(), *read.options()).is_ok());
+    let mut floating = read.balls().to_vec();
+    floating[2].state.pos.z += 0.05;
+    let e = rebuild(floating, *read.options()).unwrap_err();
+    assert_eq!(e.key.to_string(), "balls[2].pos", "{e}");
+    assert!(e.to_string().contains("off the cloth"), "{e}");
+    let nan = snooker_engine::SimOptions {
+        max_time: f64::NAN,
+        ..*read.options()
+    };
+    let e = rebuild(read.balls().to_vec(), nan).unwrap_err();
+    assert_eq!(e.key.to_string(), "sim.max_time", "{e}");
+}

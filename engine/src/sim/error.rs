@@ -6,7 +6,7 @@ use crate::impact::ImpactError;
 /// Why a simulation stopped without finishing the shot.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SimError {
-    /// The setup is invalid.
+    /// The setup, or the simulation's limits ([`super::SimOptions::validate`]), are invalid.
     Setup(SetupError),
     /// More than `max_events` events.
     TooManyEvents {

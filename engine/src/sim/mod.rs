@@ -89,6 +89,7 @@ struct Sim<'a> {
 /// Simulates a shot from `setup` until every ball rests (or the horizon).
 pub fn simulate(setup: &Setup, opts: &SimOptions) -> Result<Shot, SimError> {
     setup.validate().map_err(SimError::Setup)?;
+    opts.validate().map_err(SimError::Setup)?;
     let p = &setup.params;
     let mut sim = Sim {
         setup,

@@ -7,6 +7,7 @@ use crate::detect;
 use crate::impact::Models;
 use crate::motion;
 use crate::params::Params;
+use crate::shown::Shown;
 use crate::table::Table;
 use serde::{Deserialize, Serialize};
 
@@ -43,6 +44,43 @@ impl Default for SimOptions {
 }
 
 impl SimOptions {
+    /// Checks the limits: at least one event, `max_time` a positive finite number of seconds,
+    /// a horizon (if any) finite and not negative. A NaN horizon would be passed by every
+    /// comparison and silently mean none; a NaN `max_time` would never stop a shot.
+    pub fn validate(&self) -> Result<(), SetupError> {
+        let bad = |field: &str, reason: String| {
+            Err(SetupError {
+                ball: None,
+                field: format!("options.{field}"),
+                reason,
+            })
+        };
+        if self.max_events == 0 {
+            return bad("max_events", "must be at least 1".into());
+        }
+        if !(self.max_time.is_finite() && self.max_time > 0.0) {
+            return bad(
+                "max_time",
+                format!(
+                    "must be a positive finite number of seconds, got {}",
+                    Shown(self.max_time)
+                ),
+            );
+        }
+        if let Some(h) = self.horizon
+            && !(h.is_finite() && h >= 0.0)
+        {
+            return bad(
+                "horizon",
+                format!(
+                    "must be a finite number of seconds, not negative, got {}",
+                    Shown(h)
+                ),
+            );
+        }
+        Ok(())
+    }
+
     /// The most events allowed at one instant in a shot of `balls` balls: the larger of
     /// [`SimOptions::max_events_at_instant`] and `balls`^3. Same-instant impacts are resolved
     /// one pair at a time (the sequential hypothesis), and a line of n touching balls struck
@@ -123,14 +161,22 @@ pub fn motion_error(b: &Ball, r: f64) -> Option<(&'static str, String)> {
 }
 
 impl Setup {
-    /// Checks parameters and the starting positions: finite numbers, unique ids, every ball on
-    /// the cloth and clear of the cushions, no two balls overlapping (touching is allowed).
+    /// Checks parameters, the table's geometry ([`Table::geometry_error`]) and the starting
+    /// positions: finite numbers, unique ids, every ball on the cloth and clear of the
+    /// cushions, no two balls overlapping (touching is allowed).
     pub fn validate(&self) -> Result<(), SetupError> {
         self.params.validate().map_err(|e| SetupError {
             ball: None,
             field: format!("params.{}", e.name),
             reason: e.reason,
         })?;
+        if let Some((field, reason)) = self.table.geometry_error() {
+            return Err(SetupError {
+                ball: None,
+                field: format!("table.{field}"),
+                reason,
+            });
+        }
         let p = &self.params;
         let r = p.ball_radius;
         let contact = p.cushion_contact_distance();

@@ -102,6 +102,11 @@ pub struct Table {
 /// 0.125 m and an impact's normal speed comes out NaN). At 1 km the step is 1.1e-13 m.
 pub const OPEN_EXTENT: f64 = 1000.0;
 
+/// Shortest straight nose or facing a table may have, m: its direction is taken from its ends.
+pub const MIN_NOSE_LENGTH: f64 = 1e-6;
+/// How far a nose's normal may be from unit length and square to the nose (rounding).
+const NORMAL_TOL: f64 = 1e-9;
+
 impl Table {
     /// The endless cloth.
     pub fn open() -> Table {
@@ -119,6 +124,113 @@ impl Table {
     /// A full-size snooker table with the given dimensions.
     pub fn snooker(dims: &SnookerDims) -> Table {
         snooker::build(dims)
+    }
+
+    /// Why the engine cannot play on this table, if it cannot: the field at fault (as
+    /// `cushions[3].normal`) and the reason. A table built by [`Table::snooker`] or
+    /// [`Table::open`] always passes; one put together by hand must have every number finite,
+    /// every point in plan (z = 0) and within [`OPEN_EXTENT`] of the origin, straight noses
+    /// of some length with a unit normal across them, jaw radii not negative, pockets with a
+    /// fall and a mouth, and playing-area sides not negative (positive on a snooker table).
+    pub fn geometry_error(&self) -> Option<(String, String)> {
+        let length = |field: &str, v: f64, least: f64| {
+            (!(v.is_finite() && v >= least && v <= OPEN_EXTENT)).then(|| {
+                let at_least = if least > 0.0 {
+                    "positive"
+                } else {
+                    "not negative"
+                };
+                (
+                    field.to_string(),
+                    format!(
+                        "must be a finite length in metres, {at_least} and at most \
+                         {OPEN_EXTENT}, got {}",
+                        Shown(v)
+                    ),
+                )
+            })
+        };
+        let point = |field: String, p: Vec3| {
+            let off = !p.iter().all(|x| x.is_finite())
+                || p.x.abs() > OPEN_EXTENT
+                || p.y.abs() > OPEN_EXTENT
+                || p.z != 0.0;
+            off.then(|| {
+                (
+                    field,
+                    format!(
+                        "must be a plan point (z = 0) within {OPEN_EXTENT} m of the origin, got \
+                         ({}, {}, {})",
+                        Shown(p.x),
+                        Shown(p.y),
+                        Shown(p.z)
+                    ),
+                )
+            })
+        };
+        let least_side = if self.kind == TableKind::Snooker {
+            f64::MIN_POSITIVE
+        } else {
+            0.0
+        };
+        if let Some(e) = length("length", self.length, least_side)
+            .or_else(|| length("width", self.width, least_side))
+        {
+            return Some(e);
+        }
+        for (i, c) in self.cushions.iter().enumerate() {
+            let at = |key: &str| format!("cushions[{i}].{key}");
+            if let Some(e) = point(at("start"), c.start).or_else(|| point(at("end"), c.end)) {
+                return Some(e);
+            }
+            if c.length() < MIN_NOSE_LENGTH {
+                return Some((
+                    at("end"),
+                    format!(
+                        "the nose \"{}\" must be at least {MIN_NOSE_LENGTH} m long, got {}",
+                        c.name,
+                        Shown(c.length())
+                    ),
+                ));
+            }
+            let n = c.normal;
+            let unit = n.iter().all(|x| x.is_finite())
+                && n.z == 0.0
+                && (n.norm() - 1.0).abs() <= NORMAL_TOL
+                && n.dot(&c.direction()).abs() <= NORMAL_TOL;
+            if !unit {
+                return Some((
+                    at("normal"),
+                    format!(
+                        "the nose \"{}\" needs a unit normal in plan across its line, got ({}, \
+                         {}, {})",
+                        c.name,
+                        Shown(n.x),
+                        Shown(n.y),
+                        Shown(n.z)
+                    ),
+                ));
+            }
+        }
+        for (i, j) in self.jaws.iter().enumerate() {
+            let at = |key: &str| format!("jaws[{i}].{key}");
+            if let Some(e) =
+                point(at("centre"), j.centre).or_else(|| length(&at("radius"), j.radius, 0.0))
+            {
+                return Some(e);
+            }
+        }
+        for (i, p) in self.pockets.iter().enumerate() {
+            let at = |key: &str| format!("pockets[{i}].{key}");
+            if let Some(e) = point(at("centre"), p.centre)
+                .or_else(|| point(at("mouth"), p.mouth))
+                .or_else(|| length(&at("radius"), p.radius, f64::MIN_POSITIVE))
+                .or_else(|| length(&at("mouth_width"), p.mouth_width, f64::MIN_POSITIVE))
+            {
+                return Some(e);
+            }
+        }
+        None
     }
 
     /// Why a ball of radius `radius` cannot rest with its centre at `pos` (plan), if it can't:
