@@ -326,3 +326,37 @@ fn the_contracts_noise_offset_is_written_when_side_and_height_differ() {
         assert_eq!(n["offset"].as_f64(), Some(rms), "{n}");
     }
 }
+
+#[test]
+fn a_ball_given_a_velocity_in_the_scene_is_not_planned_as_at_rest() {
+    // The scene labelled every listed ball at rest until it was simulated, and the planner,
+    // reading the label, planned to pot a red that was rolling away.
+    let dir = temp_dir("plan-moving");
+    let (cue, red) = (
+        "{id = \"cue\", pos = [1.0, 0.9]}",
+        "{id = \"red\", pos = [2.5, 1.2]}",
+    );
+    for (balls, flag) in [
+        (
+            format!("{cue}, {{id = \"red\", pos = [2.5, 1.2], vel = [0.3, 0.0, 0.0]}}"),
+            "--pot",
+        ),
+        (
+            format!("{cue}, {{id = \"red\", pos = [2.5, 1.2], spin = [0.0, 0.0, 40.0]}}"),
+            "--pot",
+        ),
+        (
+            format!("{{id = \"cue\", pos = [1.0, 0.9], vel = [0.0, 0.2, 0.0]}}, {red}"),
+            "--cue-ball",
+        ),
+    ] {
+        let scene = dir.join("s.toml");
+        std::fs::write(&scene, format!("balls = [{balls}]\n")).unwrap();
+        let out = dir.join("plan.json");
+        let o = plan_red_top_left(&scene, &["--json", out.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{balls}: {err}");
+        assert!(err.contains(flag) && err.contains("at rest"), "{err}");
+        assert!(!out.exists());
+    }
+}

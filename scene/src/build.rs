@@ -247,7 +247,7 @@ pub fn build_keyed<X>(spec: SceneFile<X>, file: &str) -> Result<(Scene, Vec<Stri
     }
     let options = options(&spec, file)?;
 
-    let setup = Setup {
+    let mut setup = Setup {
         table,
         params,
         models: spec.models.apply_to(Default::default()),
@@ -264,6 +264,12 @@ pub fn build_keyed<X>(spec: SceneFile<X>, file: &str) -> Result<(Scene, Vec<Stri
         }
         None => fail(&e.field, e.reason),
     })?;
+    // Each ball is labelled with the law it starts under (a ball given a velocity or a spin
+    // is not at rest), as the engine labels it when the shot begins: the planner and the
+    // referee read the label before any simulation.
+    for b in &mut setup.balls {
+        b.state.motion = snooker_engine::motion::settle(b.state, &setup.params).motion;
+    }
     let keys = keys
         .into_iter()
         .zip(&setup.balls)
