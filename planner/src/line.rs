@@ -34,6 +34,11 @@ impl ShotKind {
         }
     }
 
+    /// The kind of this [`ShotKind::name`], if any.
+    pub fn from_name(name: &str) -> Option<ShotKind> {
+        ShotKind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
     /// All of them, in the order the planner tries them.
     pub const ALL: [ShotKind; 4] = [
         ShotKind::Direct,

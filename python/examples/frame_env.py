@@ -4,7 +4,8 @@ by the rules (WPBSA, as the `snooker referee` command judges them).
 Observation (a dict): ``balls``, every ball's (x, y) in m in a fixed order (the cue ball, red1
 to red15, yellow to black), (-1, -1) for a ball not on the table (potted, or the cue ball in
 hand); ``on``, the ball on (0 red, 1 any colour, 2-7 yellow to black); ``ball_in_hand`` and
-``free_ball`` (0 or 1).
+``free_ball`` (0 or 1). When the frame ends, the last observation shows the balls where its
+last stroke left them; a step after it raises ``ResetNeeded``.
 
 Action: eight numbers in [-1, 1] (the normalised space Gymnasium recommends), mapped
 linearly onto [speed 0.2-8 m/s, aim -pi-pi rad, side offset, height offset (within 0.8 of the
@@ -17,7 +18,8 @@ circle), moved to the nearest valid place if it touches a ball.
 Reward: the points the player at the table scored, less the points of a foul. Episode: a whole
 frame (``episode="frame"``: one agent plays both players) or one visit (``episode="visit"``:
 it ends when the turn passes); truncated after ``max_strokes`` strokes. ``reds`` (0 to 15) and
-``max_strokes`` (at least 1) are checked by the constructor; a step before the first ``reset``
+``max_strokes`` (at least 1) are checked by the constructor (``reds`` is for
+``start="open"``: the break-off racks 15); a step before the first ``reset``
 raises Gymnasium's ``ResetNeeded``.
 
 Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
@@ -32,7 +34,8 @@ import numpy as np
 from gymnasium import spaces
 
 import snooker
-from gym_env import whole  # the scene environment's check of a whole-number argument
+# The scene environment's checks of a whole-number argument and of an action's numbers.
+from gym_env import real_action, whole
 
 IDS = ["cue"] + [f"red{i}" for i in range(1, 16)] + [
     "yellow", "green", "brown", "blue", "pink", "black"]
@@ -68,6 +71,9 @@ class SnookerFrameEnv(gym.Env):
             raise ValueError(f'episode: "frame" or "visit", not {episode!r}')
         # Checked here, not at the first reset: Frame.open_table racks 0 to 15 reds.
         self.reds = whole(reds, "reds", 0, 15)
+        if start == "break_off" and self.reds != 15:
+            raise ValueError(f"reds: the break-off racks 15 reds (reds is for start=\"open\"), "
+                             f"got {self.reds}")
         self.max_strokes = whole(max_strokes, "max_strokes", 1, 2**63 - 1)
         self.start, self.episode = start, episode
         self.observation_space = spaces.Dict({
@@ -78,25 +84,36 @@ class SnookerFrameEnv(gym.Env):
         })
         self.action_space = spaces.Box(-1.0, 1.0, (len(ACTION_LOW),), dtype=np.float64)
         self.frame: snooker.Frame = snooker.Frame.break_off()
+        #: The last observation once the frame is over (the balls as its last stroke left
+        #: them); None while it goes on.
+        self.final: dict | None = None
         self.strokes = 0
         #: Whether reset has been called: a step before it raises Gymnasium's ResetNeeded.
         self.started = False
 
     def _obs(self) -> dict:
+        if self.final is not None:
+            return self.final
         f = self.frame
-        kinds, balls = f.kinds, f.balls
+        return self._observe(f, f.balls, f.ball_in_hand, f.free_ball)
+
+    @staticmethod
+    def _observe(f, balls: dict, ball_in_hand: bool, free_ball: bool) -> dict:
+        """The observation of frame ``f``'s balls at ``balls`` (x, y by id; a ball missing is
+        off the table); the cue ball in hand is off the table wherever the frame keeps it."""
         # The frame's own ids may differ from IDS (a file's): map by kind, reds in order.
         slots = {}
         reds = iter(range(1, 16))
-        for ball_id, kind in kinds.items():
+        for ball_id, kind in f.kinds.items():
             slot = f"red{next(reds)}" if kind == "red" else kind
-            slots[slot] = balls[ball_id]
+            if ball_id in balls and not (kind == "cue" and ball_in_hand):
+                slots[slot] = balls[ball_id][:2]
         pos = np.array([slots.get(i, (-1.0, -1.0)) for i in IDS], np.float32)
         return {
             "balls": pos,
             "on": ON.index(f.on),
-            "ball_in_hand": int(f.ball_in_hand),
-            "free_ball": int(f.free_ball),
+            "ball_in_hand": int(ball_in_hand),
+            "free_ball": int(free_ball),
         }
 
     def reset(self, seed=None, options=None):
@@ -106,6 +123,7 @@ class SnookerFrameEnv(gym.Env):
         else:
             self.frame = snooker.Frame.open_table(self.reds, int(self.np_random.integers(2**63)))
         self.strokes = 0
+        self.final = None
         self.started = True
         return self._obs(), {}
 
@@ -126,21 +144,18 @@ class SnookerFrameEnv(gym.Env):
 
     @staticmethod
     def physical(action) -> np.ndarray:
-        """The action in its physical units (see the module's docs): eight finite numbers,
-        clipped to [-1, 1]; any other shape, a NaN or an infinity raises ``ValueError`` (a
-        single number would otherwise be broadcast to all eight)."""
-        try:
-            a = np.asarray(action, dtype=np.float64)
-        except (TypeError, ValueError):
-            a = None
-        if a is None or a.shape != ACTION_LOW.shape or not np.all(np.isfinite(a)):
-            raise ValueError(f"action: {ACTION_LOW.size} finite numbers in [-1, 1], got {action!r}")
+        """The action in its physical units (see the module's docs): eight finite real
+        numbers, clipped to [-1, 1]; any other shape, a NaN, an infinity, a bool or a complex
+        number raises ``ValueError`` (``real_action``)."""
+        a = real_action(action, ACTION_LOW.size, f"{ACTION_LOW.size} finite numbers in [-1, 1]")
         a = np.clip(a, -1.0, 1.0)
         return ACTION_LOW + (a + 1.0) / 2.0 * (ACTION_HIGH - ACTION_LOW)
 
     def step(self, action):
         if not self.started:
             raise gym.error.ResetNeeded("step: call reset() first")
+        if self.final is not None:
+            raise gym.error.ResetNeeded("step: the frame is over; call reset()")
         a = self.physical(action)
         speed, aim, side, height, elevation = (float(x) for x in a[:5])
         nominated, cue_ball = self._choices(a)
@@ -163,6 +178,12 @@ class SnookerFrameEnv(gym.Env):
             self.frame = after
             if self.episode == "visit" and after.to_play != player:
                 terminated = True
+        else:
+            # The frame is over: the last observation shows where its last stroke left the
+            # balls (the frame itself has no next position to show).
+            left = {b: s.pos for b, s in verdict.shot.final.items()
+                    if s.motion not in ("pocketed", "off_table")}
+            self.final = self._observe(frame, left, False, False)
         truncated = not terminated and self.strokes >= self.max_strokes
         info = {
             "player": player,

@@ -2,10 +2,12 @@
 
 Observation: every ball's (x, y) on the table (m; a pocketed ball at (-1, -1)), as a float32
 array of shape (balls, 2). Action: the strike, [speed m/s, aim rad, side offset m, height
-offset m, elevation rad]. Reward: +1 per object ball potted, -1 if the cue ball is potted
-(it is then respotted on the brown spot). An episode is `max_shots` shots from a random
-position of `reds` reds (0 to 15); it ends early when every red is down. A step before the
-first `reset` raises `ResetNeeded` (Gymnasium's; `RuntimeError` without Gymnasium).
+offset m, elevation rad]: finite real numbers (a bool or complex action is refused), clipped
+to the bounds. Reward: +1 per object ball potted, -1 if the cue ball is potted (it is then
+respotted on the brown spot, or the nearest free place behind it). An episode is
+`max_shots` shots from a random position of `reds` reds (0 to 15); it ends early when every
+red is down. A step before the first `reset` raises `ResetNeeded` (Gymnasium's;
+`RuntimeError` without Gymnasium).
 
 Runs with or without gymnasium installed (with it, the class is a `gymnasium.Env` with its
 spaces). Try it: `python examples/gym_env.py` plays random strikes.
@@ -40,20 +42,39 @@ ACTION_LOW = np.array([0.1, -math.pi, -0.0105, -0.0105, 0.0])
 ACTION_HIGH = np.array([8.0, math.pi, 0.0105, 0.0105, 1.2])
 
 
-def checked(action) -> np.ndarray:
-    """``action`` as an array of the action's shape, finite (it is then clipped to the bounds):
-    anything else raises ``ValueError`` (a single number would otherwise be broadcast to every
-    component, and a NaN has no place in the bounds)."""
+def real_action(action, size: int, what: str) -> np.ndarray:
+    """``action`` as ``size`` finite real numbers (float64): anything else raises ``ValueError``
+    saying ``what`` is expected. A single number would otherwise be broadcast to every
+    component, a NaN has no place in the bounds, and bools or complex numbers are not the
+    action space's numbers (NumPy would read True as 1 and drop an imaginary part)."""
     try:
-        a = np.asarray(action, dtype=np.float64)
+        raw = np.asarray(action)
+        a = raw.astype(np.float64) if raw.dtype.kind in "iuf" else None
     except (TypeError, ValueError):
         a = None
-    if a is None or a.shape != ACTION_LOW.shape or not np.all(np.isfinite(a)):
-        raise ValueError(
-            f"action: {ACTION_LOW.size} finite numbers (speed, aim, side, height, elevation), "
-            f"got {action!r}"
-        )
+    if a is None or a.shape != (size,) or not np.all(np.isfinite(a)):
+        raise ValueError(f"action: {what}, got {action!r}")
     return a
+
+
+def checked(action) -> np.ndarray:
+    """``action`` as an array of the action's shape, finite (it is then clipped to the bounds):
+    anything else raises ``ValueError`` (``real_action``)."""
+    return real_action(action, ACTION_LOW.size,
+                       f"{ACTION_LOW.size} finite numbers (speed, aim, side, height, elevation)")
+
+
+def free_place(balls: dict) -> tuple:
+    """Where the potted cue ball goes back: the brown spot, or if a ball is there the nearest
+    free point behind it on the table's long axis, then anywhere free (scanning the table):
+    never onto another ball."""
+    def free(p):
+        return all(math.dist(p, q) > 2 * R + 1e-6 for q in balls.values())
+    x0, y0 = BROWN_SPOT
+    line = [(x0 - k * R, y0) for k in range(int((x0 - 2 * R) / R))]
+    grid = [(x, y) for x in np.arange(2 * R, LENGTH - 2 * R, R)
+            for y in np.arange(2 * R, WIDTH - 2 * R, R)]
+    return next((float(x), float(y)) for x, y in line + grid if free((x, y)))
 
 
 def whole(value, name: str, low: int, high: int) -> int:
@@ -121,10 +142,7 @@ class SnookerEnv(Base):
         self.balls = {b: tuple(s.pos[:2]) for b, s in final.items()
                       if b not in potted and b not in off}
         if "cue" not in self.balls:
-            spot = BROWN_SPOT
-            if any(math.dist(spot, q) < 2 * R for q in self.balls.values()):
-                spot = (0.5, 0.5)
-            self.balls["cue"] = spot
+            self.balls["cue"] = free_place(self.balls)
         terminated = len(self.balls) == 1
         truncated = self.shots >= self.max_shots
         info = {"events": len(shot.events), "potted": sorted(potted)}

@@ -73,7 +73,11 @@ __all__ = [
     "Considered",
     "impact_ball_ball",
     "impact_cushion",
+    "MAX_THREADS",
 ]
+
+#: Most threads ``simulate_many`` starts, as ``snooker batch``.
+MAX_THREADS: int = _snooker.MAX_THREADS
 
 Scene = _snooker.Scene
 SceneLike = Union[str, "os.PathLike[str]", dict, "_snooker.Scene"]
@@ -85,11 +89,18 @@ Verdict = _snooker.Verdict
 FrameLike = Union[str, "os.PathLike[str]", dict, "_snooker.Frame"]
 
 
+def _is_text(source: str) -> bool:
+    """Whether a ``str`` source is TOML text rather than a path: it has a newline, or a ``=``
+    (a key) and names no file (sweep folders such as ``speed=2/`` are paths)."""
+    return "\n" in source or ("=" in source and not os.path.isfile(source))
+
+
 def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     """Reads and checks a scene.
 
     ``source`` is a path (``str`` or ``os.PathLike``) to a scene file, TOML text (a ``str``
-    containing a newline or ``=``), a dict with the scene file's keys (NumPy arrays and
+    containing a newline, or a ``=`` and naming no file: ``"runs/speed=2/s.toml"`` is a
+    path), a dict with the scene file's keys (NumPy arrays and
     numbers welcome as values), or a scene already read. ``name`` names TOML text and dicts
     in error messages. Raises ``ValueError`` naming the file, key and reason.
     """
@@ -100,7 +111,7 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
     if isinstance(source, os.PathLike):
         return _snooker.load(os.fspath(source))
     if isinstance(source, str):
-        if "\n" in source or "=" in source:
+        if _is_text(source):
             return _snooker.parse_toml(source, name)
         return _snooker.load(source)
     raise ValueError(
@@ -110,9 +121,9 @@ def scene(source: SceneLike, name: str = "scene") -> "_snooker.Scene":
 
 def frame(source: FrameLike, name: str = "frame") -> "_snooker.Frame":
     """Reads and checks a frame of snooker (formats.md, "Frame": a scene plus a ``[frame]``
-    table): a path to a frame file, TOML text, a dict with the file's keys, or a frame already
-    read. Its ``[cue]``, if any, is not part of the frame (pass the strike to ``play``).
-    Raises ``ValueError`` naming the file, key and reason."""
+    table): a path to a frame file, TOML text (as ``scene`` tells them apart), a dict with the
+    file's keys, or a frame already read. Its ``[cue]``, if any, is not part of the frame (pass
+    the strike to ``play``). Raises ``ValueError`` naming the file, key and reason."""
     if isinstance(source, _snooker.Frame):
         return source
     if isinstance(source, dict):
@@ -120,7 +131,7 @@ def frame(source: FrameLike, name: str = "frame") -> "_snooker.Frame":
     if isinstance(source, os.PathLike):
         return _snooker.Frame.load(os.fspath(source))
     if isinstance(source, str):
-        if "\n" in source or "=" in source:
+        if _is_text(source):
             return _snooker.Frame.from_toml(source, name)
         return _snooker.Frame.load(source)
     raise ValueError(
@@ -251,18 +262,28 @@ def simulate_many(
     """Simulates many scenes on ``threads`` threads (all cores by default), the GIL released,
     the results in input order and bit-identical to one-by-one runs whatever the thread count.
 
-    ``threads`` is a whole number (a Python or NumPy int) of at least 1; no more threads than
-    scenes are started. Every scene is read first (a bad one raises ``ValueError`` naming its index before any is
-    simulated). A scene the engine could not simulate raises its ``SimulationError`` with
+    ``scenes`` is a sequence of scenes (each as ``scene`` takes it); a single scene, a ``str``
+    or a dict, raises ``TypeError``. ``threads`` is a whole number (a Python or NumPy int) from
+    1 to ``MAX_THREADS`` (1024, as ``snooker batch``); no more threads than scenes are
+    started. Every scene is read first (a bad one raises ``ValueError`` naming its index,
+    ``scenes[i]``, before any is simulated); an unnamed scene's result is named as
+    ``simulate`` names it. A scene the engine could not simulate raises its ``SimulationError`` with
     ``errors="raise"``; with ``errors="return"`` the error takes the shot's place in the list.
     """
     if errors not in ("raise", "return"):
         raise ValueError(f'errors: "raise" or "return", not {errors!r}')
+    if isinstance(scenes, (str, bytes, dict, os.PathLike, _snooker.Scene)):
+        raise TypeError(
+            f"scenes: a sequence of scenes (a list), not one {type(scenes).__name__}: "
+            "pass [scene] for one")
     if threads is not None:
-        threads = _whole(threads, "threads", 1)
+        threads = _whole(threads, "threads", 1, MAX_THREADS)
     read = []
     for i, s in enumerate(scenes):
-        read.append(scene(s, name=f"scenes[{i}]"))
+        try:
+            read.append(scene(s))
+        except (ValueError, TypeError) as e:
+            raise type(e)(f"scenes[{i}]: {e}") from None
     if threads is not None:
         # More threads than scenes would only idle, and starting many thousands takes minutes.
         threads = min(threads, max(len(read), 1))
@@ -289,6 +310,7 @@ def plan(
     alternatives: int = 3,
     seed: int = 1,
     cue_ball: str = "cue",
+    kinds: Optional[Sequence[str]] = None,
 ) -> Plan:
     """Plans a shot as ``snooker plan`` does (thesis chapter 7): the strike that pots ``pot``
     in ``pocket`` and leaves the cue ball nearest ``cue_to`` (x, y in m), ranked by its pot
@@ -302,12 +324,17 @@ def plan(
     ``side``, ``height`` m; ``offset`` sets both side and height; before, ``speed`` was a
     fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``:
     intervals, e.g. ``{"speed": (0.3, 6.0)}`` (keys ``speed`` m/s, ``elevation`` rad, ``side``
-    and ``height`` m). Bad requests raise ``ValueError`` naming the argument (``noise['aim']``,
-    ``cue_to``); a ball that cannot be potted raises ``CannotPot``.
+    and ``height`` m); ``kinds``: the kinds of pot tried, as ``--kinds`` (``direct``,
+    ``double``, ``plant``, ``kiss``; all by default). Bad requests raise ``ValueError`` naming
+    the argument (``noise['aim']``, ``cue_to``); a ball that cannot be potted raises
+    ``CannotPot``.
     """
 
     if bounds is not None and not isinstance(bounds, dict):
         raise TypeError(f"bounds: a dict of (low, high) by variable, not {bounds!r}")
+    if kinds is not None and (isinstance(kinds, (str, bytes)) or not all(
+            isinstance(k, str) for k in kinds)):
+        raise TypeError(f"kinds: a list of kind names (direct, double, plant, kiss), not {kinds!r}")
     doc = _snooker.plan(
         scene(source),
         pot,
@@ -320,6 +347,7 @@ def plan(
         _whole(alternatives, "alternatives", 0),
         _whole(seed, "seed", 0),
         cue_ball,
+        None if kinds is None else list(kinds),
     )
     return Plan.from_dict(doc)
 
@@ -352,7 +380,7 @@ def play(
         _noise(noise),
         _whole(seed, "seed", 0),
         _whole(effort, "effort", 1),
-        bool(visit),
+        _flag(visit, "visit"),
         str(agent),
         str(opponent),
         _whole(max_strokes, "max_strokes", 1),
@@ -398,6 +426,14 @@ def _noise(noise) -> dict:
     if float(noise) == 0.0:
         return {k: 0.0 for k in ("aim", "elevation", "speed", "side", "height")}
     raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+
+
+def _flag(value: Any, name: str) -> bool:
+    """``value`` as a ``bool``: ``True`` or ``False`` (or NumPy's), refused naming the argument
+    with ``TypeError`` (``bool("no")`` would be true)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}: True or False, not {value!r}")
+    return bool(value)
 
 
 def _number(value: Any, name: str) -> float:

@@ -3,6 +3,9 @@
 from os import PathLike
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
+#: Most threads ``simulate_many`` starts (``snooker batch``'s limit).
+MAX_THREADS: int
+
 class SimulationError(RuntimeError):
     """A valid scene that the engine could not simulate to its end."""
 
@@ -142,6 +145,7 @@ def plan(
     alternatives: int = 3,
     seed: int = 1,
     cue_ball: str = "cue",
+    kinds: Optional[List[str]] = None,
 ) -> Dict[str, Any]:
     """The plan document as Python values (``snooker.Plan.from_dict`` reads it)."""
 def play(

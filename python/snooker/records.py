@@ -81,6 +81,7 @@ class BallState(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "BallState":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(tuple(d["pos"]), tuple(d["vel"]), tuple(d["spin"]), d["motion"])
 
 
@@ -107,6 +108,7 @@ class Event(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Event":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["t"],
             d["kind"],
@@ -154,6 +156,7 @@ class StrikeReport(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "StrikeReport":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["ball"],
             d["cue_speed"],
@@ -169,7 +172,8 @@ class StrikeReport(_Record):
 class ShotResult(_Record):
     """The result of a shot (formats.md, "Result", with its extensions): the ``scene``'s name,
     the ``events`` in time order, every ball's ``final`` state by id, the ``duration`` (s), the
-    ``pots`` and the balls ``off_table`` in time order, the impact ``models`` and every
+    ``ending`` (``at_rest``, or ``horizon``: stopped at the scene's horizon with balls still
+    moving), the ``pots`` and the balls ``off_table`` in time order, the impact ``models`` and every
     parameter (``params``, by name), the cue ``strike`` if there was one, and a reminder of the
     ``units``."""
 
@@ -177,6 +181,7 @@ class ShotResult(_Record):
     events: List[Event]
     final: Dict[str, BallState]
     duration: float
+    ending: str
     pots: List[Pot]
     off_table: List[OffTable]
     models: Dict[str, str]
@@ -186,11 +191,13 @@ class ShotResult(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "ShotResult":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["scene"],
             [Event.from_dict(e) for e in d["events"]],
             _states(d["final"]),
             d["duration"],
+            d.get("ending", "at_rest"),
             [Pot(**p) for p in d["pots"]],
             [OffTable(**o) for o in d["off_table"]],
             dict(d["models"]),
@@ -214,6 +221,7 @@ class Strike(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Strike":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(d["ball"], d["speed"], d["aim"], tuple(d["offset"]), d["elevation"])
 
 
@@ -244,6 +252,7 @@ class Robustness(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Robustness":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             dict(d["noise"]),
             d["samples"],
@@ -268,6 +277,7 @@ class PlannedShot(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "PlannedShot":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             Strike.from_dict(d["strike"]),
             d["potted"],
@@ -302,6 +312,7 @@ class Plan(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Plan":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["scene"],
             d["pot"],
@@ -331,6 +342,7 @@ class MotionSummary(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "MotionSummary":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["speed"],
             d["direction_deg"],
@@ -356,6 +368,7 @@ class BallAfter(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "BallAfter":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             MotionSummary.from_dict(d["after_impact"]),
             MotionSummary.from_dict(d["after_slip"]),
@@ -399,6 +412,7 @@ class ImpactReport(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "ImpactReport":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         def ball(key: str) -> Optional[BallAfter]:
             return BallAfter.from_dict(d[key]) if key in d else None
 
@@ -434,6 +448,7 @@ class Considered(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Considered":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             d["pot"],
             d["pocket"],
@@ -484,6 +499,7 @@ class Stroke(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Stroke":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         plan = dict(d["plan"])
         alternatives = plan.pop("alternatives", [])
         return cls(
@@ -526,6 +542,7 @@ class Decision(_Record):
 
     @classmethod
     def from_dict(cls, d: dict) -> "Decision":
+        """The record of its JSON document (the inverse of ``to_dict``)."""
         return cls(
             tuple(d["cue_ball"]) if d["cue_ball"] is not None else None,
             d["nominated"],

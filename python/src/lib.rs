@@ -8,25 +8,27 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyBytes};
 use snooker_engine::SimError;
-use snooker_planner::{Interval, NoiseComponent, PlanError, Request, RequestField, StrikeVariable};
+use snooker_planner::{Interval, PlanError, Request, RequestField, ShotKind, StrikeVariable};
 use snooker_scene::impact_report::{Geometry, ImpactSpec, impact_report};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+mod interrupt;
+mod noise;
 mod play;
 mod rules;
 mod strict;
 
 create_exception!(
-    _snooker,
+    snooker._snooker,
     SimulationError,
     PyRuntimeError,
     "A valid scene that the engine could not simulate to its end (the event cap, the time \
      limit, or an internal error: please report the scene)."
 );
 create_exception!(
-    _snooker,
+    snooker._snooker,
     CannotPot,
     PyRuntimeError,
     "No strike within the bounds pots the ball without a foul (blocked, snookered)."
@@ -99,6 +101,39 @@ fn parse_dict(source: &Bound<'_, PyAny>, file: &str) -> PyResult<Scene> {
     snooker_scene::parse_value(strict::Strict(source.clone()), file)
         .map(|s| Scene(Arc::new(s)))
         .map_err(bad_scene)
+}
+
+/// `v` as a point (x, y) in m: a sequence of exactly two numbers (not bools, which Python
+/// would take as 1 and 0, nor a string), refused naming the argument `name`: `TypeError` for
+/// the type, `ValueError` for the length.
+pub(crate) fn point(v: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; 2]> {
+    let not_a_point = || -> PyResult<PyErr> {
+        Ok(PyTypeError::new_err(format!(
+            "{name}: two numbers (x, y) in m, not {}",
+            v.repr()?
+        )))
+    };
+    if v.is_instance_of::<pyo3::types::PyString>() {
+        return Err(not_a_point()?);
+    }
+    let Ok(items) = v.try_iter() else {
+        return Err(not_a_point()?);
+    };
+    let items = items.collect::<PyResult<Vec<_>>>()?;
+    if items.len() != 2 {
+        return Err(PyValueError::new_err(format!(
+            "{name}: two numbers (x, y), got {} of them",
+            items.len()
+        )));
+    }
+    let mut xy = [0.0; 2];
+    for (slot, item) in xy.iter_mut().zip(&items) {
+        if item.is_instance_of::<PyBool>() || item.is_instance_of::<pyo3::types::PyString>() {
+            return Err(not_a_point()?);
+        }
+        *slot = item.extract::<f64>().or_else(|_| Err(not_a_point()?))?;
+    }
+    Ok(xy)
 }
 
 /// A whole-number argument `name` in [0, `max`]: a Python or NumPy int (not a bool, not a
@@ -261,7 +296,7 @@ fn simulate_many(
 }
 
 /// The Python argument a planning request's field comes from, for messages.
-fn argument(field: RequestField) -> String {
+pub(crate) fn argument(field: RequestField) -> String {
     match field {
         RequestField::CueBall => "cue_ball".into(),
         RequestField::Pot => "pot".into(),
@@ -277,13 +312,32 @@ fn argument(field: RequestField) -> String {
     }
 }
 
+/// The kinds of pot named (`direct`, `double`, `plant`, `kiss`), each once, at least one.
+fn shot_kinds(names: &[String]) -> PyResult<Vec<ShotKind>> {
+    let mut kinds = Vec::new();
+    for name in names {
+        let k = ShotKind::from_name(name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "kinds: unknown kind '{name}' (direct, double, plant, kiss)"
+            ))
+        })?;
+        if !kinds.contains(&k) {
+            kinds.push(k);
+        }
+    }
+    if kinds.is_empty() {
+        return Err(PyValueError::new_err("kinds: name at least one kind"));
+    }
+    Ok(kinds)
+}
+
 /// Plans a shot (thesis chapter 7; as `snooker plan`): the plan document as Python values.
 /// `noise` maps `aim`, `elevation`, `speed`, `side`, `height` (rad, m/s, m; `offset` for both
 /// side and height) to standard deviations changing the standard noise; `bounds` maps `speed`,
 /// `elevation`, `side`, `height` to (low, high).
 #[pyfunction]
 #[pyo3(signature = (scene, pot, pocket, cue_to, tolerance=0.001, noise=None, bounds=None,
-                    samples=256, alternatives=3, seed=1, cue_ball="cue"))]
+                    samples=256, alternatives=3, seed=1, cue_ball="cue", kinds=None))]
 #[allow(clippy::too_many_arguments)]
 fn plan<'py>(
     py: Python<'py>,
@@ -298,6 +352,7 @@ fn plan<'py>(
     alternatives: usize,
     seed: u64,
     cue_ball: &str,
+    kinds: Option<Vec<String>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let sc = scene.0.clone();
     let p = sc.setup.params;
@@ -315,26 +370,9 @@ fn plan<'py>(
         seed,
         ..Request::new(pot, pocket, cue_to, &p)
     };
-    let noise = noise.unwrap_or_default();
-    if noise.contains_key("offset") && noise.contains_key("speed") {
-        return Err(PyValueError::new_err(
-            "noise: the old spelling (speed as a fraction of the cue speed, one offset) is no \
-             longer read: speed is now in m/s (the old speed=F at cue speed V is F*V) and \
-             offset is side and height",
-        ));
-    }
-    for (name, sd) in noise {
-        if name == "offset" {
-            request.noise.side = sd;
-            request.noise.height = sd;
-            continue;
-        }
-        let c = NoiseComponent::from_name(&name).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "noise['{name}']: unknown noise (aim, elevation, speed, side, height; or offset)"
-            ))
-        })?;
-        request.noise.set(c, sd);
+    request.noise = noise::from_dict(request.noise, noise.unwrap_or_default())?;
+    if let Some(names) = kinds {
+        request.kinds = shot_kinds(&names)?;
     }
     for (name, (lo, hi)) in bounds.unwrap_or_default() {
         let v = StrikeVariable::from_name(&name).ok_or_else(|| {
@@ -344,9 +382,14 @@ fn plan<'py>(
         })?;
         request.bounds.set(v, Interval { lo, hi });
     }
-    let plan = py
-        .detach(|| snooker_planner::plan(&sc, request))
-        .map_err(bad)?;
+    let cancel = snooker_planner::Cancel::new();
+    let problem = snooker_planner::Problem::new(&sc, request)
+        .map_err(&bad)?
+        .with_cancel(cancel.clone());
+    let plan = interrupt::run(py, &cancel, || {
+        snooker_planner::plan_problem(&problem, &sc.name)
+    })?
+    .map_err(bad)?;
     to_python(py, &plan)
 }
 
@@ -426,6 +469,7 @@ fn impact_cushion(
 #[pymodule]
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Scene>()?;
+    m.add("MAX_THREADS", snooker_batch::run::MAX_THREADS)?;
     m.add_class::<Shot>()?;
     m.add_class::<rules::Frame>()?;
     m.add_class::<rules::Verdict>()?;

@@ -7,33 +7,12 @@ use crate::rules::Frame;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use serde::Serialize;
-use snooker_planner::{Noise, NoiseComponent, StrikeSpec};
+use snooker_planner::{Cancel, Noise, StrikeSpec};
 use snooker_player::{
-    Agent, Considered, Context, Greedy, PlayOptions, Player, Until, game::DEFAULT_MAX_STROKES,
+    Agent, Considered, Context, Greedy, PlayOptions, Player, Until, Watch,
+    game::DEFAULT_MAX_STROKES,
 };
 use std::collections::BTreeMap;
-
-/// The noise from standard deviations by name changing the standard noise (`offset` sets
-/// both side and height), checked.
-fn noise(given: BTreeMap<String, f64>) -> PyResult<Noise> {
-    let mut n = Noise::STANDARD;
-    for (name, sd) in given {
-        if name == "offset" {
-            n.side = sd;
-            n.height = sd;
-            continue;
-        }
-        let c = NoiseComponent::from_name(&name).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "noise['{name}']: unknown noise (aim, elevation, speed, side, height; or offset)"
-            ))
-        })?;
-        n.set(c, sd);
-    }
-    n.check()
-        .map_err(|e| PyValueError::new_err(format!("noise: {e}")))?;
-    Ok(n)
-}
 
 fn agent(name: &str, what: &str) -> PyResult<&'static dyn Agent> {
     match name {
@@ -84,13 +63,14 @@ pub fn play<'py>(
     opponent: &str,
     max_strokes: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let cancel = Cancel::new();
     let opts = PlayOptions {
-        noise: self::noise(noise.unwrap_or_default())?,
+        noise: crate::noise::from_dict(Noise::STANDARD, noise.unwrap_or_default())?,
         seed,
         effort: effort_of(effort)?,
         until: if visit { Until::Visit } else { Until::Frame },
         max_strokes: positive(max_strokes as u64, "max_strokes")? as usize,
-        watch: Default::default(),
+        watch: Watch::with_cancel(cancel.clone()),
     };
     opts.check()
         .map_err(|e| PyValueError::new_err(format!("{}: {}", e.key, e.reason)))?;
@@ -100,17 +80,16 @@ pub fn play<'py>(
     let at = frame.state().to_play as usize;
     let mut agents = [other, other];
     agents[at] = me;
-    let lines = py
-        .detach(|| {
-            snooker_player::play(&frame, agents, &opts, |_| {}).map(|game| {
-                game.strokes
-                    .iter()
-                    .map(|s| serde_json::to_value(s.log_line()))
-                    .collect::<Result<Vec<_>, _>>()
-            })
+    let lines = crate::interrupt::run(py, &cancel, || {
+        snooker_player::play(&frame, agents, &opts, |_| {}).map(|game| {
+            game.strokes
+                .iter()
+                .map(|s| serde_json::to_value(s.log_line()))
+                .collect::<Result<Vec<_>, _>>()
         })
-        .map_err(|e| PyRuntimeError::new_err(format!("{}: {e}", frame.name())))?
-        .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    })?
+    .map_err(|e| PyRuntimeError::new_err(format!("{}: {e}", frame.name())))?
+    .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     crate::to_python(py, &lines)
 }
 
@@ -140,17 +119,17 @@ pub fn choose<'py>(
     effort: u64,
     agent: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let cancel = Cancel::new();
     let ctx = Context {
-        noise: self::noise(noise.unwrap_or_default())?,
+        noise: crate::noise::from_dict(Noise::STANDARD, noise.unwrap_or_default())?,
         seed,
         stroke,
         effort: effort_of(effort)?,
-        watch: Default::default(),
+        watch: Watch::with_cancel(cancel.clone()),
     };
     let who = self::agent(agent, "agent")?;
     let frame = frame.0.clone();
-    let d = py
-        .detach(|| who.choose(&frame, &ctx))
+    let d = crate::interrupt::run(py, &cancel, || who.choose(&frame, &ctx))?
         .map_err(|e| PyValueError::new_err(format!("{}: {e}", frame.name())))?;
     let cue_id = frame
         .cue_index()

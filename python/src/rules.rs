@@ -309,7 +309,8 @@ impl Frame {
 
     /// The valid place for the cue ball in hand nearest `preferred` (x, y), or None.
     /// A non-finite `preferred` is refused (ValueError).
-    fn nearest_placement(&self, preferred: [f64; 2]) -> PyResult<Option<(f64, f64)>> {
+    fn nearest_placement(&self, preferred: &Bound<'_, PyAny>) -> PyResult<Option<(f64, f64)>> {
+        let preferred = crate::point(preferred, "preferred")?;
         if !preferred.iter().all(|v| v.is_finite()) {
             return Err(PyValueError::new_err(format!(
                 "preferred: must be two finite numbers (x, y), got ({}, {})",
@@ -329,8 +330,11 @@ impl Frame {
 
     /// This frame with the cue ball in hand placed at `pos` (x, y): refused (ValueError)
     /// outside the D or touching a ball.
-    fn with_cue_ball_at(&self, pos: [f64; 2]) -> PyResult<Frame> {
-        self.0.with_cue_ball_at(pos).map(Frame).map_err(bad_frame)
+    fn with_cue_ball_at(&self, pos: &Bound<'_, PyAny>) -> PyResult<Frame> {
+        self.0
+            .with_cue_ball_at(crate::point(pos, "pos")?)
+            .map(Frame)
+            .map_err(bad_frame)
     }
 
     /// Plays `strike` (a dict with the `[cue]` keys: speed, aim, offset, elevation) on the cue
@@ -343,11 +347,12 @@ impl Frame {
         py: Python<'py>,
         strike: &Bound<'py, PyAny>,
         nominated: Option<&str>,
-        cue_ball: Option<[f64; 2]>,
+        cue_ball: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let cue = self::strike(strike, &cue_id(&self.0))?;
         let mut frame = self.0.clone();
         if let Some(p) = cue_ball {
+            let p = crate::point(p, "cue_ball")?;
             frame = frame.with_cue_ball_at(p).map_err(bad_frame)?;
         }
         if let Some(n) = nominated {
@@ -407,6 +412,14 @@ impl Frame {
             check_strike(&self.0, c)?;
         }
         Ok(self.0.to_toml(cue.as_ref()))
+    }
+
+    /// Pickling and `copy.deepcopy` (an environment's snapshot, a worker process): the frame
+    /// travels as its frame file, which reads back to the same frame.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String, String))> {
+        let frame = &slf.get().0;
+        let read = slf.get_type().getattr("from_toml")?;
+        Ok((read, (frame.to_toml(None), frame.name().to_string())))
     }
 
     fn __repr__(&self) -> String {

@@ -171,22 +171,26 @@ def test_simulate_many_takes_numpy_thread_counts():
 
 @pytest.mark.parametrize("threads, error", [
     (0, ValueError), (-1, ValueError), (2**70, ValueError), (True, TypeError), (2.0, TypeError),
+    (1025, ValueError),
 ])
 def test_simulate_many_refuses_a_bad_thread_count_naming_it(threads, error):
-    # Before: 2**70 raised a bare OverflowError, True ran on one thread.
-    with pytest.raises(error, match="^threads: "):
+    # Before: 2**70 raised a bare OverflowError, True ran on one thread; 1025 was refused only
+    # with 1025 scenes or more, the message giving the range as [1, 2^64 - 1].
+    with pytest.raises(error, match="^threads: " + ("must lie in \\[1, 1024\\]"
+                                                     if error is ValueError else "")):
         snooker.simulate_many([SCENE], threads=threads)
 
 
 def test_simulate_many_with_far_more_threads_than_scenes_returns_at_once():
     # Before: threads=100_000 for two scenes started tens of thousands of threads and did not
-    # come back within minutes. Run apart, so that the old behaviour fails the test rather than
-    # hanging it.
+    # come back within minutes (now above MAX_THREADS it is refused, above); at the most
+    # allowed, no more threads than scenes are started. Run apart, so that a hang fails the
+    # test rather than hanging it.
     import subprocess
     import sys
 
     code = ("import snooker; s = " + repr(SCENE) +
-            "; print(len(snooker.simulate_many([s, s], threads=100_000)))")
+            "; print(len(snooker.simulate_many([s, s], threads=snooker.MAX_THREADS)))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=60)
     assert out.returncode == 0, out.stderr
@@ -337,3 +341,90 @@ def test_an_empty_path_is_refused_as_empty(read, what):
     # Before: ": cannot read the scene file: No such file or directory", naming nothing.
     with pytest.raises(ValueError, match=f"^path: empty, not the path of a {what} file"):
         read("")
+
+
+@pytest.mark.parametrize("scenes", ["scenes/break-off.toml", SCENE])
+def test_simulate_many_refuses_one_scene_for_a_list(scenes):
+    # Before: a path was read character by character ("s: cannot read the scene file"), a
+    # dict by its keys.
+    with pytest.raises(TypeError, match="^scenes: a sequence of scenes"):
+        snooker.simulate_many(scenes)
+
+
+def test_simulate_many_names_a_bad_scene_by_its_index_and_its_results_as_simulate_does():
+    # Before: a path that could not be read was named by the message alone, and an unnamed
+    # scene's result was called "scenes[0]" where simulate calls it "scene".
+    with pytest.raises(ValueError, match=r"^scenes\[1\]: "):
+        snooker.simulate_many([SCENE, "no/such/scene.toml"])
+    assert snooker.simulate_many([SCENE])[0].result == snooker.simulate(SCENE).result
+
+
+def test_a_path_with_an_equals_sign_is_a_path(tmp_path):
+    # Before: "runs/speed=2/s.toml" was read as TOML text: "not valid TOML (line 1, column 1)".
+    d = tmp_path / "speed=2"
+    d.mkdir()
+    path = d / "s.toml"
+    path.write_text('balls = [{id = "cue", pos = [1.0, 0.8]}]\n')
+    assert snooker.simulate(str(path)).final["cue"].motion == "stationary"
+    # TOML text on one line is still text.
+    assert isinstance(snooker.scene('balls = [{id = "cue", pos = [1.0, 0.8]}]'), snooker.Scene)
+
+
+@pytest.mark.parametrize("noise", [{"offset": 0.001, "speed": 0.1}])
+def test_play_and_choose_refuse_the_old_noise_spelling_as_plan_does(noise):
+    # Before: play and choose read speed=0.1 as 0.1 m/s where the old spelling meant a tenth
+    # of the cue speed; plan and the command line refused it.
+    f = snooker.Frame.open_table(1, 2)
+    for call in (snooker.play, snooker.choose):
+        with pytest.raises(ValueError, match="^noise: the old spelling"):
+            call(f, noise=noise, effort=10)
+
+
+def test_play_names_a_bad_noise_key_as_plan_does():
+    # Before: "noise: noise.aim: ..." from play and choose, "noise['aim']: ..." from plan.
+    f = snooker.Frame.open_table(1, 2)
+    with pytest.raises(ValueError, match=r"^noise\['aim'\]: expected a finite number >= 0"):
+        snooker.play(f, noise={"aim": -1.0}, effort=10)
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda f: f.with_cue_ball_at((True, 0.9)), TypeError, r"^pos: two numbers"),
+    (lambda f: f.with_cue_ball_at((0.7, 0.9, 0.0)), ValueError,
+     r"^pos: two numbers \(x, y\), got 3"),
+    (lambda f: f.nearest_placement((1, 2, 3)), ValueError, r"^preferred: two numbers"),
+    (lambda f: f.nearest_placement("xy"), TypeError, r"^preferred: two numbers"),
+    (lambda f: f.play(STRIKE, cue_ball=(0.7, 0.9, 0.0)), ValueError, r"^cue_ball: two numbers"),
+    (lambda f: f.play(STRIKE, cue_ball=(True, 0.9)), TypeError, r"^cue_ball: two numbers"),
+])
+def test_a_place_that_is_not_two_numbers_is_refused_naming_the_argument(call, error, message):
+    # Before: True was taken as 1.0 (and the place blamed for lying outside the D), and three
+    # numbers raised "expected a sequence of length 2 (got 3)", naming no argument.
+    f = snooker.Frame.break_off()
+    with pytest.raises(error, match=message):
+        call(f)
+
+
+def test_play_takes_a_bool_for_visit_and_nothing_else():
+    # Before: visit="no" played a visit (bool("no") is True).
+    with pytest.raises(TypeError, match="^visit: True or False"):
+        snooker.play(snooker.Frame.open_table(1, 2), visit="no", effort=10)
+
+
+def test_plan_takes_the_kinds_of_pot_as_the_command_line_does():
+    scene = {"balls": [{"id": "cue", "pos": [1.0, 0.9]}, {"id": "red", "pos": [2.5, 1.2]}]}
+    args = dict(cue_to=(1.5, 0.5), samples=4)
+    direct = snooker.plan(scene, "red", "top-left", kinds=["direct"], **args)
+    assert all(s.route.kind == "direct" for s in [direct.best] + list(direct.alternatives))
+    with pytest.raises(ValueError, match="^kinds: unknown kind 'bank'"):
+        snooker.plan(scene, "red", "top-left", kinds=["bank"], **args)
+    with pytest.raises(TypeError, match="^kinds: a list"):
+        snooker.plan(scene, "red", "top-left", kinds="direct", **args)
+
+
+def test_the_exceptions_pickle_for_worker_processes():
+    # Before: made in a module "_snooker" that cannot be imported: PicklingError.
+    import pickle
+
+    for cls in (snooker.SimulationError, snooker.CannotPot):
+        e = pickle.loads(pickle.dumps(cls("why")))
+        assert type(e) is cls and e.args == ("why",)

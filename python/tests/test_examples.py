@@ -63,10 +63,12 @@ def test_the_environment_passes_gymnasiums_checker_and_a_seed_repeats_an_episode
 
 
 @pytest.mark.parametrize("action", [[1.0], [1.0] * 6, [np.nan, 0, 0, 0, 0], [np.inf, 0, 0, 0, 0],
-                                    np.zeros((2, 5)), "abcde", None])
+                                    np.zeros((2, 5)), "abcde", None, np.array([True] * 5),
+                                    np.array([2, 0, 0, 0, 0], complex)])
 def test_an_action_of_the_wrong_shape_or_not_finite_is_refused(action):
     # Before: [1.0] was broadcast to all five components and played (speed 1, aim 1 rad, ...);
-    # a NaN came back as the scene's "key `cue.speed`", six numbers as a broadcasting error.
+    # a NaN came back as the scene's "key `cue.speed`", six numbers as a broadcasting error;
+    # bools were played as 1 and 0, a complex action with its imaginary part dropped.
     env = SnookerEnv(reds=1)
     env.reset(seed=1)
     with pytest.raises(ValueError, match="^action: 5 finite numbers"):
@@ -92,3 +94,19 @@ def test_a_bad_count_is_refused_naming_it(kw, error):
     (name,) = kw
     with pytest.raises(error, match=f"^{name}: "):
         SnookerEnv(**kw)
+
+
+def test_the_potted_cue_ball_comes_back_to_a_free_place():
+    # Before: with the brown spot taken, the cue ball went to (0.5, 0.5) unchecked, onto a red
+    # there; the observation showed two balls in one place and every later step raised.
+    from gym_env import BROWN_SPOT, R
+
+    env = SnookerEnv(reds=2)
+    env.reset(seed=4)
+    env.balls = {"cue": (3.2, 1.4), "red1": BROWN_SPOT, "red2": (0.5, 0.5)}
+    obs, reward, *_ = env.step([2.0, math.atan2(1.778 - 1.4, 3.569 - 3.2), 0, 0, 0])
+    assert reward == -1.0  # the in-off
+    places = [tuple(p) for p in obs if tuple(p) != (-1.0, -1.0)]
+    assert len(places) == 3
+    assert all(math.dist(p, q) >= 2 * R for i, p in enumerate(places) for q in places[:i])
+    env.step([1.0, 0.0, 0.0, 0.0, 0.0])  # the episode goes on

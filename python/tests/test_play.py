@@ -94,3 +94,34 @@ def test_the_player_as_a_gymnasium_agent_plays_the_strike_it_chose():
                              "offset": [float(side), float(height)],
                              "elevation": float(elevation)})
     assert info["potted"] == verdict.potted and reward == verdict.points - verdict.foul_points
+
+
+@pytest.mark.parametrize("call", [
+    "snooker.play(snooker.Frame.open_table(15, 7), visit=False, max_strokes=300, noise=0)",
+    "snooker.plan('scenes/chapter7-example.toml', 'red', 'middle-left', (1.25, 0.0262), "
+    "samples=1000000, alternatives=1000)",
+])
+def test_ctrl_c_stops_a_long_call(call):
+    # Before: the interrupt reached Python only when the call returned (32 s later for a
+    # frame, minutes for a plan of a million samples); now the search stops within a batch of
+    # shots. The call runs in a child process sent SIGINT once it is under way; it must end
+    # with KeyboardInterrupt well before the call could have finished.
+    import signal
+    import subprocess
+    import time
+
+    root = pathlib.Path(__file__).resolve().parents[2]
+    code = ("import snooker, sys\nprint('started', flush=True)\n"
+            f"try:\n    {call}\nexcept KeyboardInterrupt:\n    print('interrupted')\n"
+            "    sys.exit(3)\n")
+    child = subprocess.Popen([sys.executable, "-c", code], cwd=root, stdout=subprocess.PIPE,
+                             text=True)
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(2.0)
+    child.send_signal(signal.SIGINT)
+    try:
+        out, _ = child.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        child.kill()
+        raise AssertionError("the call went on a minute after Ctrl-C")
+    assert child.returncode == 3 and "interrupted" in out, (child.returncode, out)

@@ -163,7 +163,8 @@ def test_a_visit_ends_when_the_turn_passes():
 
 
 @pytest.mark.parametrize("action", [[0.0], np.zeros(9), np.full(8, np.nan), np.full(8, np.inf),
-                                    np.zeros((2, 8)), "abcdefgh"])
+                                    np.zeros((2, 8)), "abcdefgh", np.ones(8, bool),
+                                    np.zeros(8, complex)])
 def test_the_frame_environment_refuses_an_action_of_the_wrong_shape_or_not_finite(action):
     # Before: [0.0] was broadcast to all eight numbers and a stroke played; a NaN came back
     # as "key `cue.speed`", a (2, 8) array as a TypeError from float().
@@ -177,12 +178,13 @@ def test_the_frame_environment_refuses_an_action_of_the_wrong_shape_or_not_finit
 @pytest.mark.parametrize("kw, error", [
     ({"reds": 20}, ValueError), ({"reds": -1}, ValueError), ({"reds": 6.0}, TypeError),
     ({"reds": True}, TypeError), ({"max_strokes": 0}, ValueError),
-    ({"max_strokes": 2.5}, TypeError),
+    ({"max_strokes": 2.5}, TypeError), ({"start": "break_off", "reds": 3}, ValueError),
 ])
 def test_the_frame_environment_refuses_a_bad_count_when_made(kw, error):
     # Before: reds=20 was taken and refused only at the first reset (by Frame.open_table);
     # max_strokes=0 cut every episode after one stroke, 2.5 after three.
-    (name,) = kw
+    # start="break_off" with reds=3 racked 15 reds without a word.
+    name = "reds" if "reds" in kw else next(iter(kw))
     with pytest.raises(error, match=f"^{name}: "):
         SnookerFrameEnv(**kw)
 
@@ -195,3 +197,56 @@ def test_a_frame_environment_stepped_before_reset_asks_for_reset():
     with pytest.raises(ResetNeeded, match=r"^step: call reset\(\) first"):
         env.step(np.zeros(8))
     assert env.strokes == 0
+
+
+def test_the_last_observation_shows_the_frame_as_its_last_stroke_left_it():
+    # Before: when a stroke ended the frame, the observation was the position before it, and
+    # a further step played that stroke again from the old frame, paying its reward twice.
+    from gymnasium.error import ResetNeeded
+
+    from frame_env import ACTION_HIGH, ACTION_LOW
+
+    def norm(p):
+        return 2 * (np.array(p) - ACTION_LOW) / (ACTION_HIGH - ACTION_LOW) - 1
+
+    env = SnookerFrameEnv(reds=0)
+    env.reset(seed=0)
+    env.frame = snooker.frame(ROOT / "rules" / "tests" / "frames" / "last_black.toml")
+    before = env._obs()
+    action = norm([1.5, math.pi / 4, 0, 0, 0, 0, 0, 0])
+    obs, reward, terminated, _, info = env.step(action)
+    assert terminated and info["winner"] is not None
+    assert env.observation_space.contains(obs)
+    assert not np.array_equal(obs["balls"], before["balls"])
+    black = IDS.index("black")
+    assert ("black" in info["potted"]) == (tuple(obs["balls"][black]) == (-1.0, -1.0))
+    with pytest.raises(ResetNeeded, match="frame is over"):
+        env.step(action)
+    obs, _ = env.reset(seed=0)
+    assert env.observation_space.contains(obs)
+
+
+def test_the_cue_ball_in_hand_is_off_the_table_in_the_observation():
+    # Before: at the break-off the cue ball in hand was shown at its place in the D, after an
+    # in-off at (-1, -1): two encodings of one state.
+    env = SnookerFrameEnv(start="break_off")
+    obs, _ = env.reset(seed=0)
+    assert obs["ball_in_hand"] == 1
+    assert tuple(obs["balls"][IDS.index("cue")]) == (-1.0, -1.0)
+
+
+def test_a_frame_environment_can_be_copied_and_pickled():
+    # Before: "cannot pickle 'snooker._snooker.Frame' object": no snapshot of an environment
+    # (tree search, checkpoints), no frame sent to a worker process.
+    import copy
+    import pickle
+
+    env = SnookerFrameEnv(reds=3)
+    env.reset(seed=1)
+    twin = copy.deepcopy(env)
+    a = env.step(np.zeros(8))
+    b = twin.step(np.zeros(8))
+    assert np.array_equal(a[0]["balls"], b[0]["balls"]) and a[1:4] == b[1:4]
+    f = snooker.Frame.open_table(5, 3)
+    g = pickle.loads(pickle.dumps(f))
+    assert g.to_toml() == f.to_toml() and g.balls == f.balls and g.name == f.name
