@@ -22,15 +22,22 @@ pub enum OutputError {
         "is not a regular file (a device, a pipe or a socket); name a file, or `-` where the option takes it for standard output"
     )]
     NotRegularFile,
+    /// `-`, where the option cannot write to standard output (it would make a file named `-`).
+    #[error("`-` is standard output only for --json; this option writes a file: name one")]
+    Dash,
     /// A file lies where a directory on the way should be.
     #[error("{} is not a directory", .0.display())]
     NotADirectory(std::path::PathBuf),
 }
 
-/// Checks, before any work, that `path` can become an output file: it is not a directory (nor
-/// ends with a separator), a device, a pipe or a socket, and nothing but directories lies on
-/// its way (missing directories are created when it is written).
+/// Checks, before any work, that `path` can become an output file: it is not `-` (a caller
+/// whose option takes `-` for standard output handles it before), a directory (nor ends with
+/// a separator), a device, a pipe or a socket, and nothing but directories lies on its way
+/// (missing directories are created when it is written).
 pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
+    if path.as_os_str() == "-" {
+        return Err(OutputError::Dash);
+    }
     if path.is_dir() {
         return Err(OutputError::Directory);
     }
@@ -54,6 +61,48 @@ pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
         Some(a) if !a.is_dir() => Err(OutputError::NotADirectory(a.to_path_buf())),
         _ => Ok(()),
     }
+}
+
+/// Whether `a` and `b` name one file: the same existing file (through links), or the same
+/// path made absolute.
+pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => matches!(
+            (std::path::absolute(a), std::path::absolute(b)),
+            (Ok(a), Ok(b)) if a == b
+        ),
+    }
+}
+
+/// Checks a command's outputs before any work: each can become a file ([`check_output`]), no
+/// two are one file (the last written would replace the other), and none is one of `inputs`
+/// (a frame replaced by its own next frame). The message names the flag.
+pub fn check_outputs(
+    outputs: &[(&str, Option<std::path::PathBuf>)],
+    inputs: &[&std::path::Path],
+) -> Result<(), String> {
+    let given: Vec<(&str, &std::path::Path)> = outputs
+        .iter()
+        .filter_map(|(flag, p)| p.as_deref().map(|p| (*flag, p)))
+        .collect();
+    for (k, &(flag, out)) in given.iter().enumerate() {
+        check_output(out).map_err(|e| format!("{flag} {}: {e}", out.display()))?;
+        if let Some(input) = inputs.iter().find(|i| same_file(out, i)) {
+            return Err(format!(
+                "{flag} {}: is an input of the command ({}): it would be replaced",
+                out.display(),
+                input.display()
+            ));
+        }
+        if let Some((other, _)) = given[..k].iter().find(|(_, o)| same_file(out, o)) {
+            return Err(format!(
+                "{flag} {}: is also {other}'s file: each output needs its own",
+                out.display()
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Checks, before any work, that `dir` can become an output directory holding `file`: it is

@@ -110,12 +110,20 @@ fn bad_input_is_one_message_and_nothing_written() {
             "--threads",
         ),
         (vec!["batch", "scenes", "--out"], "is a directory"),
+        // A CSV name got JSON lines under it; `-` made a file named `-`.
+        (vec!["batch", "scenes", "--out"], "not .csv"),
+        (
+            vec!["batch", "scenes", "--out"],
+            "standard output only for --json",
+        ),
     ] {
         let mut args = args.clone();
-        let target = if says == "is a directory" {
-            dir.to_str().unwrap()
-        } else {
-            out.to_str().unwrap()
+        let csv = dir.join("r.csv");
+        let target = match says {
+            "is a directory" => dir.to_str().unwrap(),
+            "not .csv" => csv.to_str().unwrap(),
+            "standard output only for --json" => "-",
+            _ => out.to_str().unwrap(),
         };
         args.push(target);
         let o = snooker(&args);
@@ -184,4 +192,42 @@ fn the_results_do_not_replace_the_input() {
     assert!(err.contains("--out") && err.contains("input"), "{err}");
     assert_eq!(std::fs::read_to_string(&input).unwrap(), text);
     std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_scene_entry_that_cannot_be_read_fails_in_its_place() {
+    // A dangling link and an upper-case extension were skipped without a word: "1 scenes,
+    // 0 failed", exit 0, a scene lost from a run that said it succeeded.
+    let dir = temp_dir("batch-entries");
+    let scenes = dir.join("scenes");
+    std::fs::create_dir_all(&scenes).unwrap();
+    let good = "balls = [{id = \"cue\", pos = [1.0, 0.8]}]\n[cue]\nball = \"cue\"\nspeed = 1.0\naim = 0.2\n";
+    std::fs::write(scenes.join("a.toml"), good).unwrap();
+    std::fs::write(scenes.join("c.TOML"), good).unwrap();
+    std::os::unix::fs::symlink(dir.join("missing.toml"), scenes.join("b.toml")).unwrap();
+    let out = dir.join("r.jsonl");
+    let o = snooker(&[
+        "batch",
+        scenes.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("b.toml"), "{err}");
+    let got = lines(&out);
+    assert_eq!(got.len(), 3);
+    assert!(got[0].get("error").is_none() && got[2].get("error").is_none());
+    assert!(got[1]["error"].as_str().unwrap().contains("b.toml"));
+    assert!(got[2]["source"].as_str().unwrap().ends_with("c.TOML"));
+    // An upper-case .PARQUET is a table too (it was JSON lines under that name).
+    let table = dir.join("r.PARQUET");
+    snooker(&[
+        "batch",
+        scenes.to_str().unwrap(),
+        "--out",
+        table.to_str().unwrap(),
+        "-q",
+    ]);
+    assert!(std::fs::read(&table).unwrap().starts_with(b"PAR1"));
 }

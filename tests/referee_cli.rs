@@ -284,6 +284,10 @@ fn after_a_foul_a_sequence_takes_the_offender_playing_again_put_back_or_a_free_b
     );
     let o = snooker(&["referee", &first, &with_free]);
     assert_eq!(o.status.code(), Some(2));
+    // Named as the play-again it is, the free ball kept, not by the player (the message was
+    // "frame.to_play: to_play is 0, the stroke left 1", against the frame the stroke left).
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("key `frame.free_ball`"), "{err}");
     // No play again after a legal stroke: the table goes to the other player.
     let miss = format!("{FRAMES}/safety_miss.toml");
     ok(&["referee", &miss, "--frame-out", &s(&p("m1.toml"))]);
@@ -442,4 +446,60 @@ fn bad_frames_exit_2_naming_the_key_and_write_nothing() {
             assert!(!out.exists(), "{name}: {} written", out.display());
         }
     }
+}
+
+#[test]
+fn an_output_that_is_an_input_another_output_or_a_dash_is_refused() {
+    // `--frame-out` onto the frame played replaced it (its [cue] lost); `--json` and
+    // `--frame-out` on one file left TOML in it; `--frame-out -` made a file named `-`. Each
+    // exited 0.
+    let dir = temp_dir("referee-outputs");
+    let frame = dir.join("f.toml");
+    std::fs::copy(Path::new(FRAMES).join("pot_red.toml"), &frame).unwrap();
+    let before = std::fs::read(&frame).unwrap();
+    let f = frame.to_str().unwrap();
+    let o = dir.join("o.json");
+    let o = o.to_str().unwrap();
+    for (args, says) in [
+        (vec!["referee", f, "--frame-out", f], "is an input"),
+        (
+            vec!["referee", f, "--json", o, "--frame-out", o],
+            "is also --json's file",
+        ),
+        (
+            vec!["referee", f, "--frame-out", "-"],
+            "standard output only for --json",
+        ),
+        (vec!["simulate", f, "--record", f], "is an input"),
+        (
+            vec!["play", f, "--log", o, "--json", o, "--effort", "10"],
+            "is also --json's",
+        ),
+    ] {
+        let out = snooker(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    }
+    assert_eq!(std::fs::read(&frame).unwrap(), before);
+    assert!(!Path::new(o).exists() && !Path::new("-").exists());
+}
+
+#[test]
+fn the_recordings_call_of_a_stroke_names_the_colours_put_back() {
+    // A tie on the last black: the scoreboard said the black was respotted for the
+    // re-spotted black game, the stroke's line in `events/frame` did not.
+    let dir = temp_dir("referee-respot-call");
+    let rrd = dir.join("t.rrd");
+    let tied = format!("{FRAMES}/tied_frame.toml");
+    ok(&["referee", &tied, "--record", rrd.to_str().unwrap(), "-q"]);
+    let d = common::decode_recording(&std::fs::read(&rrd).unwrap());
+    let calls = common::rows_of::<rerun::components::Text>(
+        &d,
+        "events/frame",
+        rerun::TextLog::descriptor_text().component,
+    );
+    let last = calls.last().unwrap().1[0].as_str();
+    assert!(last.contains("potted black; respotted black"), "{last}");
 }

@@ -58,7 +58,8 @@ pub enum InputError {
     Empty(String),
 }
 
-/// The scenes of a directory (its `*.toml` files, by file name) or a JSON-lines file
+/// The scenes of a directory (its `*.toml` entries, by file name, the extension in any case;
+/// one that cannot be read is still a scene, to fail with its reason) or a JSON-lines file
 /// (`*.jsonl`, `*.ndjson`).
 pub fn read(path: &Path) -> Result<Vec<Source>, InputError> {
     let shown = path.display().to_string();
@@ -70,7 +71,12 @@ pub fn read(path: &Path) -> Result<Vec<Source>, InputError> {
         let mut files: Vec<_> = std::fs::read_dir(path)
             .map_err(unreadable)?
             .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "toml") && p.is_file())
+            // Every `*.toml` entry, whatever it is: one that cannot be read (a dangling link,
+            // a directory) gets its error row rather than vanishing from the run.
+            .filter(|p| {
+                p.extension()
+                    .is_some_and(|x| x.eq_ignore_ascii_case("toml"))
+            })
             .collect();
         files.sort();
         files
@@ -82,7 +88,7 @@ pub fn read(path: &Path) -> Result<Vec<Source>, InputError> {
             .collect()
     } else if path
         .extension()
-        .is_some_and(|x| x == "jsonl" || x == "ndjson")
+        .is_some_and(|x| x.eq_ignore_ascii_case("jsonl") || x.eq_ignore_ascii_case("ndjson"))
     {
         from_json_lines(&snooker_scene::read_text(path).map_err(unreadable)?, &shown)
     } else if path.exists() {

@@ -148,11 +148,9 @@ fn the_cue_ball_potted_is_a_foul_and_gives_ball_in_hand() {
 
 #[test]
 fn a_ball_forced_off_the_table_is_a_foul_and_goes_back_if_a_colour() {
-    // No strike from rest lifts a ball in the engine's models (the cloth takes the cue's
-    // downward impulse, thesis §7.1.3), so the shot is the stroke of a frame with the blue
-    // sent flying as the fuzz regression's ball is (scene/tests/regressions.rs): it clears the
-    // top cushion. The referee sees a shot in which the cue ball hit a red and the blue left
-    // the table.
+    // A colour sent flying as the fuzz regression's ball is (scene/tests/regressions.rs): it
+    // clears the top cushion. The referee sees a shot in which the cue ball hit a red and the
+    // blue left the table. (A stroke of a frame file that sends a ball off: below.)
     let f = load("safety_miss");
     let strike = f.strike.unwrap();
     let mut setup = f.frame.setup(&strike).unwrap();
@@ -171,6 +169,19 @@ fn a_ball_forced_off_the_table_is_a_foul_and_goes_back_if_a_colour() {
     assert_eq!(v.off_table, ["blue"]);
     assert_eq!(foul(&v), (FoulReason::OffTable, 5));
     assert_eq!(respotted(&v), [("blue", [1.7845, 0.889])]);
+}
+
+#[test]
+fn a_power_stroke_can_send_the_cue_ball_off_the_table() {
+    let (f, v) = play("cue_ball_off_table");
+    assert_eq!(v.first_hit.as_deref(), Some("red1"));
+    assert_eq!(v.off_table, ["cue"]);
+    assert!(v.potted.is_empty());
+    assert_eq!(foul(&v), (FoulReason::OffTable, 4));
+    let n = next(&f, &v);
+    assert!(n.state().ball_in_hand);
+    assert_eq!(n.state().to_play, 1);
+    assert_eq!(v.scores, [0, 4]);
 }
 
 #[test]

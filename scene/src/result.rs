@@ -178,6 +178,10 @@ pub struct ShotRecord {
     pub final_states: OrderedMap<BallRecord>,
     /// End of the shot, s.
     pub duration: f64,
+    /// Why it ended: `at_rest` (every ball at rest or out of play) or `horizon` (stopped at
+    /// the scene's `[sim] horizon` with balls still moving, as `final` then shows them).
+    #[serde(default = "at_rest")]
+    pub ending: snooker_engine::Ending,
     /// Every pot, in time order.
     pub pots: Vec<Pot>,
     /// Every ball that flew off the table, in time order.
@@ -191,6 +195,11 @@ pub struct ShotRecord {
     pub strike: Option<StrikeRecord>,
     /// A reminder of the units and frame.
     pub units: String,
+}
+
+/// A result document written before `ending` was: every such shot ran to rest.
+fn at_rest() -> snooker_engine::Ending {
+    snooker_engine::Ending::AtRest
 }
 
 /// The result document of `shot`, simulated from `scene`.
@@ -273,6 +282,7 @@ pub fn result_record(scene: &Scene, shot: &Shot) -> ShotRecord {
         events,
         final_states,
         duration: shot.duration,
+        ending: shot.ending,
         pots,
         off_table,
         models: scene.setup.models,

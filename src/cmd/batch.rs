@@ -21,7 +21,8 @@ pub struct Args {
     pub scenes: PathBuf,
     /// Where the results go: JSON lines (one result per scene, as `simulate --json` writes
     /// it, plus its `source`), or, for a name ending in `.parquet`, a table of per-shot
-    /// summaries (the book's "Many shots" page, docs/python.md).
+    /// summaries (the book's "Many shots" page, docs/python.md). Another extension than
+    /// .jsonl, .ndjson, .json or .parquet (any case) is refused.
     #[arg(long, value_name = "RESULTS")]
     pub out: PathBuf,
     /// Threads to simulate on (default: every core; at most 1024).
@@ -84,18 +85,25 @@ fn progress(len: usize, quiet: bool) -> ProgressBar {
     bar
 }
 
-/// Whether `a` and `b` are the same existing file.
-fn same_file(a: &Path, b: &Path) -> bool {
-    matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
-}
-
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let out = &args.out;
     if let Err(e) = output::check_output(out) {
         return bad_input(format!("--out {}: {e}", out.display()));
     }
-    if same_file(out, &args.scenes) {
+    // A name asking for a format the batch does not write would get JSON lines under it.
+    if let Some(x) = out
+        .extension()
+        .map(|x| x.to_string_lossy().to_ascii_lowercase())
+        && !["jsonl", "ndjson", "json", "parquet"].contains(&x.as_str())
+    {
+        return bad_input(format!(
+            "--out {}: the results are JSON lines (.jsonl, .ndjson, .json) or a Parquet table \
+             (.parquet), not .{x}",
+            out.display()
+        ));
+    }
+    if output::same_file(out, &args.scenes) {
         return bad_input(format!(
             "--out {}: is the batch's input (the results would replace its scenes)",
             out.display()
@@ -110,7 +118,9 @@ pub fn run(args: Args) -> ExitCode {
         Ok(s) => s,
         Err(e) => return bad_input(e),
     };
-    let table = out.extension().is_some_and(|x| x == "parquet");
+    let table = out
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("parquet"));
     let mut writer = if table {
         Writer::Table(Vec::with_capacity(sources.len()))
     } else {

@@ -161,12 +161,9 @@ fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
 fn parse_kinds(spec: &str) -> Result<Vec<ShotKind>, String> {
     let mut kinds = Vec::new();
     for name in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-        let k = ShotKind::ALL
-            .into_iter()
-            .find(|k| k.name() == name)
-            .ok_or_else(|| {
-                format!("--kinds {spec}: unknown kind `{name}` (direct, double, plant, kiss)")
-            })?;
+        let k = ShotKind::from_name(name).ok_or_else(|| {
+            format!("--kinds {spec}: unknown kind `{name}` (direct, double, plant, kiss)")
+        })?;
         if !kinds.contains(&k) {
             kinds.push(k);
         }
@@ -218,12 +215,8 @@ pub fn run(args: Args) -> ExitCode {
         ("--scene-out", args.scene_out.clone()),
         ("--record", args.record.clone()),
     ];
-    for (flag, out) in &outputs {
-        if let Some(out) = out
-            && let Err(e) = output::check_output(out)
-        {
-            return bad_input(format!("{flag} {}: {e}", out.display()));
-        }
+    if let Err(e) = output::check_outputs(&outputs, &[&args.scene]) {
+        return bad_input(e);
     }
     let request = Request {
         cue_ball: args.cue_ball.clone(),

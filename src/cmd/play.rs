@@ -292,12 +292,8 @@ pub fn run(args: Args) -> ExitCode {
         ("--log", args.log.clone()),
         ("--record", args.record.clone()),
     ];
-    for (flag, out) in &outputs {
-        if let Some(out) = out
-            && let Err(e) = output::check_output(out)
-        {
-            return bad_input(format!("{flag} {}: {e}", out.display()));
-        }
+    if let Err(e) = output::check_outputs(&outputs, &[&args.frame]) {
+        return bad_input(e);
     }
     let opts = PlayOptions {
         noise,

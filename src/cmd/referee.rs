@@ -127,12 +127,9 @@ pub fn run(args: Args) -> ExitCode {
         ("--frame-out", args.frame_out.clone()),
         ("--record", args.record.clone()),
     ];
-    for (flag, out) in &outputs {
-        if let Some(out) = out
-            && let Err(e) = output::check_output(out)
-        {
-            return bad_input(format!("{flag} {}: {e}", out.display()));
-        }
+    let inputs: Vec<&Path> = args.frames.iter().map(PathBuf::as_path).collect();
+    if let Err(e) = output::check_outputs(&outputs, &inputs) {
+        return bad_input(e);
     }
     let opts = record::RecordOptions {
         rate: args.record_rate,
@@ -164,11 +161,19 @@ pub fn run(args: Args) -> ExitCode {
                         before.play_again(&prev.verdict),
                         before.put_back(&prev.verdict),
                     ];
-                    if let Err(e) = file.frame.follows(&expected)
-                        && !again
-                            .iter()
-                            .flatten()
-                            .any(|a| file.frame.follows(a).is_ok())
+                    let candidates: Vec<&snooker_rules::Frame> = std::iter::once(&*expected)
+                        .chain(again.iter().flatten())
+                        .collect();
+                    // The message is the one against the frame meant: the one with the same
+                    // player to play (the offender's play-again, a put back), else the frame
+                    // the stroke left.
+                    let to_play = file.frame.state().to_play;
+                    let meant = candidates
+                        .iter()
+                        .find(|c| c.state().to_play == to_play)
+                        .unwrap_or(&candidates[0]);
+                    if !candidates.iter().any(|c| file.frame.follows(c).is_ok())
+                        && let Err(e) = file.frame.follows(meant)
                     {
                         let mut e = file.locate(&e);
                         e.reason = format!("{} ({})", e.reason, prev.file.file);

@@ -40,10 +40,13 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(e),
     };
     let json = args.json.as_deref();
-    if let Some(out) = json.filter(|o| *o != "-")
-        && let Err(e) = output::check_output(Path::new(out))
-    {
-        return bad_input(format!("--json {out}: {e}"));
+    let outputs = [
+        ("--json", json.filter(|o| *o != "-").map(PathBuf::from)),
+        ("--record", args.record.clone()),
+    ];
+    let inputs: Vec<&Path> = args.scene.iter().map(PathBuf::as_path).collect();
+    if let Err(e) = output::check_outputs(&outputs, &inputs) {
+        return bad_input(e);
     }
     let recording = args.record.map(|p| {
         (
@@ -54,13 +57,10 @@ pub fn run(args: Args) -> ExitCode {
             },
         )
     });
-    if let Some((out, opts)) = &recording {
-        if let Err(e) = output::check_output(out) {
-            return bad_input(format!("--record {}: {e}", out.display()));
-        }
-        if let Err(e) = opts.validate() {
-            return bad_input(format!("--record-rate {}: {e}", Shown(opts.rate)));
-        }
+    if let Some((_, opts)) = &recording
+        && let Err(e) = opts.validate()
+    {
+        return bad_input(format!("--record-rate {}: {e}", Shown(opts.rate)));
     }
     let shot = match snooker_engine::simulate(&scene.setup, &scene.options) {
         Ok(s) => s,

@@ -186,8 +186,7 @@ impl Outputs {
                 bail!("-o {}: {}: {e}", out.display(), path.display());
             }
         }
-        let same = |a: &Path, b: &Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b);
-        if same(out, scene) {
+        if crate::output::same_file(out, scene) {
             bail!(
                 "-o {}: is the scene the shot is read from (the data file would replace it)",
                 out.display()

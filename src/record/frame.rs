@@ -124,12 +124,20 @@ fn call(n: usize, v: &Verdict) -> String {
     } else {
         format!("; potted {}", v.potted.join(", "))
     };
+    // A colour put back, the black after a tie on it included (the re-spotted black game,
+    // WPBSA Section 3 Rule 4(c)).
+    let respotted = if v.respotted.is_empty() {
+        String::new()
+    } else {
+        let ids: Vec<&str> = v.respotted.iter().map(|(id, _)| id.as_str()).collect();
+        format!("; respotted {}", ids.join(", "))
+    };
     let end = match v.winner {
         Some(w) if v.frame_over() => format!("; frame over, player {w} wins"),
         _ => String::new(),
     };
     format!(
-        "stroke {n}: {what}{potted}; scores {}-{}{end}",
+        "stroke {n}: {what}{potted}{respotted}; scores {}-{}{end}",
         v.scores[0], v.scores[1]
     )
 }
