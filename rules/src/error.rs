@@ -36,6 +36,11 @@ pub enum Problem {
     /// The open table has no spots, D or pockets.
     #[error("a frame of snooker needs the snooker table (its spots, the D and its pockets)")]
     NotSnookerTable,
+    /// A snooker table other than one a frame file can describe.
+    #[error(
+        "a frame is played on the full-size snooker table, its pocket sizes (corner_mouth, middle_mouth, jaw_radius, fall_depth) the only choice a frame file has; this table differs, so its frame file would not read back"
+    )]
+    NotTheFilesTable,
     /// A ball that is not the cue ball, a red or a colour.
     #[error(
         "ball \"{id}\" is not a ball of snooker: its id or kind must name the cue ball, a red or a colour"

@@ -51,7 +51,8 @@ fn err(key: Key, problem: Problem) -> FrameError {
 }
 
 impl Frame {
-    /// A frame from its parts, checked: the snooker table; only the cue ball, reds and
+    /// A frame from its parts, checked: the snooker table a frame file describes
+    /// (`Table::snooker` of the default dimensions but for the four pocket sizes); only the cue ball, reds and
     /// colours, each colour and the cue ball once, all at rest; the balls as `state.on` says
     /// (reds on: a red and every colour on the table; a closing colour on: no red, that colour
     /// and every higher one, no lower one); a nomination that can be played; a cue ball on the
@@ -72,6 +73,18 @@ impl Frame {
             (TableKind::Snooker, Some(d)) => d,
             _ => return Err(err(Key::Other("table.kind"), Problem::NotSnookerTable)),
         };
+        // The table a frame file can describe (its four pocket sizes, formats.md), so that the
+        // frame's file (`to_toml`) reads back to the same frame.
+        let of_file = SnookerDims {
+            corner_mouth: dims.corner_mouth,
+            middle_mouth: dims.middle_mouth,
+            jaw_radius: dims.jaw_radius,
+            fall_depth: dims.fall_depth,
+            ..SnookerDims::default()
+        };
+        if dims != of_file || table != Table::snooker(&dims) {
+            return Err(err(Key::Other("table"), Problem::NotTheFilesTable));
+        }
         if options.horizon.is_some() {
             return Err(err(Key::Other("sim.horizon"), Problem::Horizon));
         }

@@ -336,4 +336,51 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
     };
     let e = rebuild(read.balls().to_vec(), nan).unwrap_err();
     assert_eq!(e.key.to_string(), "sim.max_time", "{e}");
+    // A table no frame file describes: its file (to_toml) wrote only the pocket sizes and
+    // read back another frame.
+    let mut dims = snooker_engine::SnookerDims::default();
+    dims.length = 3.0;
+    let other = snooker_engine::Table::snooker(&dims);
+    let e = snooker_rules::Frame::new(
+        read.name(),
+        other,
+        *read.params(),
+        *read.models(),
+        *read.options(),
+        read.balls().to_vec(),
+        *read.state(),
+    )
+    .unwrap_err();
+    assert_eq!(e.key.to_string(), "table", "{e}");
+    let mut moved = read.table().clone();
+    moved.cushions[0].start.x += 0.01;
+    moved.cushions[0].end.x += 0.01;
+    let e = snooker_rules::Frame::new(
+        read.name(),
+        moved,
+        *read.params(),
+        *read.models(),
+        *read.options(),
+        read.balls().to_vec(),
+        *read.state(),
+    )
+    .unwrap_err();
+    assert_eq!(e.key.to_string(), "table", "{e}");
+    // Pocket sizes are the file's to choose: that table reads back.
+    let mut pockets = snooker_engine::SnookerDims::default();
+    pockets.corner_mouth = 0.1;
+    let f = snooker_rules::Frame::new(
+        read.name(),
+        snooker_engine::Table::snooker(&pockets),
+        *read.params(),
+        *read.models(),
+        *read.options(),
+        read.balls().to_vec(),
+        *read.state(),
+    )
+    .unwrap();
+    let back = snooker_rules::parse(&f.to_toml(None), "back.toml")
+        .unwrap()
+        .frame;
+    assert_eq!(back, f);
 }
