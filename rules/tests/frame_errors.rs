@@ -338,9 +338,10 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
     assert_eq!(e.key.to_string(), "sim.max_time", "{e}");
     // A table no frame file describes: its file (to_toml) wrote only the pocket sizes and
     // read back another frame.
-    let mut dims = snooker_engine::SnookerDims::default();
-    dims.length = 3.0;
-    let other = snooker_engine::Table::snooker(&dims);
+    let other = snooker_engine::Table::snooker(&snooker_engine::SnookerDims {
+        length: 3.0,
+        ..Default::default()
+    });
     let e = snooker_rules::Frame::new(
         read.name(),
         other,
@@ -367,8 +368,10 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
     .unwrap_err();
     assert_eq!(e.key.to_string(), "table", "{e}");
     // Pocket sizes are the file's to choose: that table reads back.
-    let mut pockets = snooker_engine::SnookerDims::default();
-    pockets.corner_mouth = 0.1;
+    let pockets = snooker_engine::SnookerDims {
+        corner_mouth: 0.1,
+        ..Default::default()
+    };
     let f = snooker_rules::Frame::new(
         read.name(),
         snooker_engine::Table::snooker(&pockets),
