@@ -321,20 +321,22 @@ impl Request {
 /// scene undone), and a count of the shots simulated.
 #[derive(Debug)]
 pub struct Problem {
+    // Private to the crate, read through the accessors below: a checked problem cannot be
+    // changed into an unchecked one (a NaN target, a pocket index past the table's).
     /// The position, the cue ball at rest where it lies.
-    pub setup: Setup,
+    pub(crate) setup: Setup,
     /// The scene's simulation limits (as `snooker simulate` uses them).
-    pub options: SimOptions,
+    pub(crate) options: SimOptions,
     /// The request.
-    pub request: Request,
+    pub(crate) request: Request,
     /// Index of the cue ball.
-    pub cue: usize,
+    pub(crate) cue: usize,
     /// Index of the object ball.
-    pub object: usize,
+    pub(crate) object: usize,
     /// Index of the pocket in the table's pockets.
-    pub pocket: usize,
+    pub(crate) pocket: usize,
     /// The cue ball's target, m (z = R).
-    pub target: Vec3,
+    pub(crate) target: Vec3,
     /// For each ball, whether a plant may strike it first.
     plant_ok: Vec<bool>,
     shots: AtomicU64,
@@ -343,6 +345,41 @@ pub struct Problem {
 }
 
 impl Problem {
+    /// The position, the cue ball at rest where it lies.
+    pub fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
+    /// The scene's simulation limits (as `snooker simulate` uses them).
+    pub fn options(&self) -> &SimOptions {
+        &self.options
+    }
+
+    /// The request, as checked.
+    pub fn request(&self) -> &Request {
+        &self.request
+    }
+
+    /// Index of the cue ball in the setup's balls.
+    pub fn cue(&self) -> usize {
+        self.cue
+    }
+
+    /// Index of the object ball in the setup's balls.
+    pub fn object(&self) -> usize {
+        self.object
+    }
+
+    /// Index of the pocket in the table's pockets.
+    pub fn pocket(&self) -> usize {
+        self.pocket
+    }
+
+    /// The cue ball's target, m (z = R).
+    pub fn target(&self) -> Vec3 {
+        self.target
+    }
+
     /// Checks `request` against `scene`.
     pub fn new(scene: &Scene, request: Request) -> Result<Problem, PlanError> {
         let mut setup = scene.setup.clone();

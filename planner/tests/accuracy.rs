@@ -69,7 +69,7 @@ fn plan_case(c: &Case) -> Outcome {
     let out = scene_out::with_strike(&c.text, &plan.best.strike).unwrap();
     let replayed = parse(&out, "out.toml").unwrap();
     let shot = snooker_engine::simulate(&replayed.setup, &replayed.options).unwrap();
-    let end = shot.final_states()[c.problem.cue].pos;
+    let end = shot.final_states()[c.problem.cue()].pos;
     assert_eq!(
         [end.x.to_bits(), end.y.to_bits()],
         plan.best.cue_final.map(f64::to_bits),

@@ -25,7 +25,7 @@ fn planned_kind(balls: &str, pot: &str, pocket: &str, kind: ShotKind) -> ShotKin
     assert!(plan.best.potted);
     assert_eq!(plan.best.route.kind, kind);
     let shot = problem.run(&plan.best.strike.cue()).unwrap();
-    classify(&shot, problem.cue, problem.object, pocket).expect("potted there")
+    classify(&shot, problem.cue(), problem.object(), pocket).expect("potted there")
 }
 
 #[test]

@@ -111,7 +111,7 @@ impl Objective for PotObjective<'_> {
                 let gain = v.points as f64 - v.foul_points() as f64;
                 let spread = match self.spread {
                     SpreadModel::AlongPath => {
-                        let (path, heading) = cue_path(shot, problem.cue);
+                        let (path, heading) = cue_path(shot, problem.cue());
                         let sd = self.valuer.noise.speed;
                         Spread::along_path(trial.cue.speed, sd, path, heading)
                     }

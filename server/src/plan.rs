@@ -173,7 +173,8 @@ pub fn run(checked: Checked, job: &Job) -> Result<Value, ApiError> {
     job.watch(problem.clone());
     job.set_note(format!(
         "planning {} in {}",
-        problem.request.pot, problem.request.pocket
+        problem.request().pot,
+        problem.request().pocket
     ));
     let plan = snooker_planner::plan_problem(&problem, &scene.scene.name);
     if problem.cancelled() {
@@ -185,7 +186,7 @@ pub fn run(checked: Checked, job: &Job) -> Result<Value, ApiError> {
     let value = input::scene_value(&planned)?;
     let replayed = input::scene(&value, &limits)?;
     let shot = shot::simulate(&replayed.scene, input::SCENE)?;
-    let end = shot.final_states()[problem.cue].pos;
+    let end = shot.final_states()[problem.cue()].pos;
     if [end.x.to_bits(), end.y.to_bits()] != plan.best.cue_final.map(f64::to_bits) {
         return Err(ApiError::internal(format!(
             "the planned shot does not replay: the cue ball ends at ({}, {}), the plan says ({}, {})",
@@ -199,7 +200,7 @@ pub fn run(checked: Checked, job: &Job) -> Result<Value, ApiError> {
         let s = input::scene(&v, &limits)?;
         let alt_shot = shot::simulate(&s.scene, input::SCENE)?;
         let mut paths = crate::paths::sample(&alt_shot, 60.0, limits.path_points);
-        alternatives.push(paths.balls.swap_remove(problem.cue));
+        alternatives.push(paths.balls.swap_remove(problem.cue()));
     }
     let view = PlanView {
         scene_toml: planned.to_toml(),

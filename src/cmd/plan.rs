@@ -243,7 +243,7 @@ pub fn run(args: Args) -> ExitCode {
         Ok(t) => t,
         Err(e) => return failed(format!("{file}: cannot write the scene again: {e}")),
     };
-    let replay = match replay(&out_text, &file, &plan, problem.cue) {
+    let replay = match replay(&out_text, &file, &plan, problem.cue()) {
         Ok(r) => r,
         Err(e) => return failed(format!("internal error: {e:#}")),
     };
@@ -393,14 +393,14 @@ fn recording(
     replay: &(scene::Scene, snooker_engine::Shot),
 ) -> anyhow::Result<Vec<u8>> {
     let (sc, shot) = replay;
-    let r = problem.setup.params.ball_radius;
+    let r = problem.setup().params.ball_radius;
     let mut overlays = vec![record::Overlay {
         entity: vec!["plan".into(), "target".into()],
-        points: vec![(0.0, problem.target), (shot.duration, problem.target)],
+        points: vec![(0.0, problem.target()), (shot.duration, problem.target())],
         color: TARGET_COLOR,
         radius: r,
     }];
-    let pocket = &problem.setup.table.pockets[problem.pocket];
+    let pocket = &problem.setup().table.pockets[problem.pocket()];
     overlays.push(record::Overlay {
         entity: vec!["plan".into(), "pocket".into()],
         points: (0..=48)
@@ -414,12 +414,12 @@ fn recording(
         radius: 0.002,
     });
     for (k, alt) in plan.alternatives.iter().enumerate() {
-        let mut setup = problem.setup.clone();
-        setup.balls[problem.cue].strike(&alt.strike.cue(), &problem.setup.params)?;
-        let alt_shot = snooker_engine::simulate(&setup, &problem.options)?;
-        let track = &alt_shot.tracks[problem.cue];
+        let mut setup = problem.setup().clone();
+        setup.balls[problem.cue()].strike(&alt.strike.cue(), &problem.setup().params)?;
+        let alt_shot = snooker_engine::simulate(&setup, problem.options())?;
+        let track = &alt_shot.tracks[problem.cue()];
         // Through every turn of its way, as `play --record` draws a path.
-        let times = record::sample::way_times(&alt_shot, problem.cue, alt.strike.speed);
+        let times = record::sample::way_times(&alt_shot, problem.cue(), alt.strike.speed);
         overlays.push(record::Overlay {
             entity: vec!["plan".into(), format!("alternative{}", k + 1)],
             points: times

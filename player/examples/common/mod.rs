@@ -69,12 +69,12 @@ pub fn pot_share(
     noise: &snooker_planner::Noise,
     n: u64,
 ) -> f64 {
-    let p = pr.setup.params;
+    let p = pr.setup().params;
     let pots = (0..n)
         .filter(|&k| {
             let ex = noise.apply(
                 cue,
-                &pr.setup.balls[0].state,
+                &pr.setup().balls[0].state,
                 &p,
                 &mut snooker_planner::rng_for(3, &[k]),
             );
