@@ -9,6 +9,8 @@ use crate::error::ApiError;
 use axum::body::Bytes;
 use axum::extract::{FromRequest, Request};
 use axum::http::header;
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
 use serde::de::DeserializeOwned;
 
 /// The name the API's errors give a request's own keys.
@@ -42,15 +44,60 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for Body<T> {
             let status = e.status().as_u16();
             ApiError::new(status, REQUEST, "", e.body_text())
         })?;
+        // A request is an object of named keys: an array would be read by position.
+        let first = bytes.iter().find(|b| !b.is_ascii_whitespace());
+        if first.is_some_and(|&b| b != b'{') {
+            return Err(ApiError::bad(
+                REQUEST,
+                "",
+                "the body must be a JSON object of the request's keys",
+            ));
+        }
         let mut de = serde_json::Deserializer::from_slice(&bytes);
         let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
-            let key = e.path().to_string();
-            let key = if key == "." || key == "?" { "" } else { &key };
-            ApiError::bad(REQUEST, key, e.into_inner().to_string())
+            let path = e.path().to_string();
+            let reason = e.into_inner().to_string();
+            ApiError::bad(REQUEST, &key_of(&path, &reason), reason)
         })?;
         de.end()
             .map_err(|e| ApiError::bad(REQUEST, "", format!("not valid JSON: {e}")))?;
         Ok(Body(value))
+    }
+}
+
+/// Refuses (413) a request whose declared `content-length` is over `limit` bytes at once: the
+/// body limit alone answered only once that much had been sent (a client declaring 1 GB and
+/// sending slowly waited for its answer).
+pub async fn declared_length(limit: usize, req: axum::extract::Request, next: Next) -> Response {
+    let declared = req
+        .headers()
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.trim().parse::<u64>().ok());
+    match declared {
+        Some(n) if n > limit as u64 => ApiError::new(
+            413,
+            REQUEST,
+            "",
+            format!("a body of {n} bytes is over the server's limit of {limit}"),
+        )
+        .into_response(),
+        _ => next.run(req).await,
+    }
+}
+
+/// The dotted key a serde error is about: its path, and for a missing, unknown or duplicate
+/// field the field itself (`pot`, not the request's top level).
+pub fn key_of(path: &str, reason: &str) -> String {
+    let path = if path == "." || path == "?" { "" } else { path };
+    let field = ["missing field `", "unknown field `", "duplicate field `"]
+        .iter()
+        .find_map(|p| reason.find(p).map(|i| &reason[i + p.len()..]))
+        .and_then(|r| r.split('`').next());
+    match (path, field) {
+        ("", Some(f)) => f.to_string(),
+        (p, Some(f)) if !p.ends_with(f) => format!("{p}.{f}"),
+        (p, _) => p.to_string(),
     }
 }
 

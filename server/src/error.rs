@@ -12,8 +12,8 @@ use snooker_scene::SceneError;
 /// An error answered to a request.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ApiError {
-    /// HTTP status.
-    #[serde(skip)]
+    /// HTTP status: also in the body (an extension), so that a job's error says what it is
+    /// (422 for a ball that cannot be potted, 500 for the server's own failure).
     pub status: u16,
     /// The input at fault (`scene`, `frame`, `request`), or empty.
     pub file: String,

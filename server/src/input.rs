@@ -97,6 +97,7 @@ fn expanded<X>(mut spec: SceneFile<X>, scene: &Scene, keys: &[String]) -> SceneF
 /// Reads a scene given as a JSON object with the scene file's keys (a `frame` table is not
 /// read, as `snooker simulate` does not read it).
 pub fn scene(value: &Value, limits: &Limits) -> Result<CheckedScene, ApiError> {
+    object(value, SCENE)?;
     let spec: SceneFile<IgnoredAny> = snooker_scene::from_value(value, SCENE)?;
     finish(spec, SCENE, limits)
 }
@@ -123,8 +124,22 @@ fn finish(
 /// Reads a frame given as a JSON object with the frame file's keys (`snooker referee`'s
 /// reader, as Python's dicts are read).
 pub fn frame(value: &Value, limits: &Limits) -> Result<FrameFile, ApiError> {
+    object(value, FRAME)?;
     let f = snooker_rules::from_value(value, FRAME)?;
     frame_bounded(f, FRAME, limits)
+}
+
+/// A scene or frame is an object of the file's keys: an array would be read by position.
+fn object(value: &Value, file: &str) -> Result<(), ApiError> {
+    if value.is_object() {
+        Ok(())
+    } else {
+        Err(ApiError::bad(
+            file,
+            "",
+            format!("a {file} is a JSON object with the file's keys"),
+        ))
+    }
 }
 
 /// Holds a frame read to the server's limits: its balls counted, its simulations (the scene's

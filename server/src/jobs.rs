@@ -169,7 +169,9 @@ impl Job {
         let running = matches!(state, State::Running);
         let (name, result, error, reason) = match state {
             State::Queued => ("queued", None, None, None),
-            State::Running => ("running", None, None, None),
+            // A cancel asked of a running job shows at once; the job ends within a batch of
+            // shots.
+            State::Running => ("running", None, None, lock(&self.cancel_reason).clone()),
             State::Done(v) => ("done", Some(v), None, None),
             State::Failed(e) => ("failed", None, Some(e), None),
             State::Cancelled(r) => ("cancelled", None, None, Some(r)),
@@ -231,7 +233,7 @@ pub struct JobStatus {
     /// Why it failed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ApiError>,
-    /// Why it was cancelled.
+    /// Why it was cancelled (also while a running job is stopping after a cancel).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
     /// Parts of the answer reported so far (strokes played).

@@ -11,6 +11,8 @@
 //! - Long work (a plan, the player's visit) is a job ([`jobs`]) with progress and
 //!   cancellation.
 //! - The page ([`assets`]) is built into the binary and loads nothing from elsewhere.
+//! - Only requests addressed to the loopback are answered ([`guard`]): no other site's page
+//!   reaches the lab by DNS rebinding or a form.
 //!
 //! The API (JSON in and out; a scene is an object with the scene file's keys, a frame the
 //! frame file's):
@@ -25,7 +27,7 @@
 //! | `POST /api/simulate` | `{scene, rate?}` | the result document and the paths ([`shot::ShotView`]) |
 //! | `POST /api/download/scene` | `{scene}` | the scene file (TOML) |
 //! | `POST /api/download/result` | `{scene}` | the JSON result, as `snooker simulate` writes it |
-//! | `POST /api/download/recording` | `{scene}` | the Rerun recording (`.rrd`) |
+//! | `POST /api/download/recording` | `{scene, rate?}` | the Rerun recording (`.rrd`), its rate lowered to fit [`Limits::recording_samples`] |
 //! | `POST /api/plan` | [`plan::PlanRequest`] | a job ([`jobs::JobStatus`]), 202 |
 //! | `POST /api/frame/stroke` | `{frame, rate?}` | the referee's result, the paths, the next frame |
 //! | `POST /api/play` | [`play::PlayRequest`] | a job (202): the player's visit, stroke by stroke |
@@ -35,6 +37,7 @@
 pub mod assets;
 pub mod body;
 pub mod error;
+pub mod guard;
 pub mod input;
 pub mod jobs;
 pub mod limits;
@@ -73,6 +76,8 @@ pub struct Config {
     pub limits: Limits,
     /// Makes the recordings to download (none: the page offers none).
     pub recorder: Option<Arc<dyn Recorder>>,
+    /// Which `Host` and `Origin` are answered ([`guard`]): the loopback's by default.
+    pub hosts: guard::HostCheck,
 }
 
 /// The server's state, shared by the handlers.
@@ -129,6 +134,12 @@ pub fn router(config: Config) -> Router {
         .method_not_allowed_fallback(method_not_allowed)
         .fallback(page)
         .layer(DefaultBodyLimit::max(config.limits.body_bytes))
+        .layer(axum::middleware::from_fn(move |req, next| {
+            body::declared_length(config.limits.body_bytes, req, next)
+        }))
+        .layer(axum::middleware::from_fn(move |req, next| {
+            guard::guard(config.hosts, req, next)
+        }))
         .with_state(lab)
 }
 
@@ -221,6 +232,15 @@ struct LayoutQuery {
     seed: Option<String>,
 }
 
+/// A query string that does not read: the key named (an unknown or repeated one).
+fn query_error(e: axum::extract::rejection::QueryRejection) -> ApiError {
+    let text = e.body_text();
+    let reason = text
+        .strip_prefix("Failed to deserialize query string: ")
+        .unwrap_or(&text);
+    ApiError::bad(body::REQUEST, &body::key_of("", reason), reason.to_string())
+}
+
 /// The whole number of query key `key`, if given: a bad one names its key.
 fn whole<T: std::str::FromStr>(key: &str, v: Option<&str>) -> Result<Option<T>, ApiError> {
     v.map(|t| {
@@ -241,7 +261,7 @@ async fn layout(
     query: Result<Query<LayoutQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<Position>, ApiError> {
     let Path(name) = name.map_err(|e| ApiError::bad(body::REQUEST, "name", e.body_text()))?;
-    let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
+    let Query(q) = query.map_err(query_error)?;
     let reds = whole::<usize>("reds", q.reds.as_deref())?;
     let seed = whole::<u64>("seed", q.seed.as_deref())?;
     let limits = lab.limits;
@@ -256,6 +276,20 @@ struct SceneReq {
     scene: Value,
     #[serde(default)]
     rate: Option<f64>,
+}
+
+/// A scene alone: the checks and the scene and result downloads take no rate.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneOnly {
+    scene: Value,
+}
+
+/// A frame alone (the frame check).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrameOnly {
+    frame: Value,
 }
 
 #[derive(Deserialize)]
@@ -276,7 +310,7 @@ struct FrameReq {
 
 async fn scene_check(
     State(lab): Shared,
-    Body(req): Body<SceneReq>,
+    Body(req): Body<SceneOnly>,
 ) -> Result<Json<Position>, ApiError> {
     let limits = lab.limits;
     lab.light(move || position::of_scene(&input::scene(&req.scene, &limits)?))
@@ -307,7 +341,7 @@ async fn scene_import(
 
 async fn frame_check(
     State(lab): Shared,
-    Body(req): Body<FrameReq>,
+    Body(req): Body<FrameOnly>,
 ) -> Result<Json<Position>, ApiError> {
     let limits = lab.limits;
     lab.light(move || position::of_frame_file(&input::frame(&req.frame, &limits)?))
@@ -354,7 +388,7 @@ fn attachment(bytes: Vec<u8>, name: &str, ext: &str, kind: &'static str) -> Resp
 
 async fn download_scene(
     State(lab): Shared,
-    Body(req): Body<SceneReq>,
+    Body(req): Body<SceneOnly>,
 ) -> Result<Response, ApiError> {
     let limits = lab.limits;
     let (name, text) = lab
@@ -373,7 +407,7 @@ async fn download_scene(
 
 async fn download_result(
     State(lab): Shared,
-    Body(req): Body<SceneReq>,
+    Body(req): Body<SceneOnly>,
 ) -> Result<Response, ApiError> {
     let limits = lab.limits;
     let (name, text) = lab
@@ -403,10 +437,16 @@ async fn download_recording(
     let limits = lab.limits;
     let (name, bytes) = lab
         .light(move || {
+            // As `snooker simulate --record` samples (240 Hz) unless the request asks.
+            let wanted = match req.rate {
+                None => limits.path_rate,
+                given => shot::rate(given, &limits)?,
+            };
             let checked = input::scene(&req.scene, &limits)?;
             let s = shot::simulate(&checked.scene, input::SCENE)?;
+            let rate = record::rate(&s, wanted, &limits)?;
             let bytes = recorder
-                .shot(&checked.scene, &s)
+                .shot(&checked.scene, &s, rate)
                 .map_err(|e| ApiError::unfinished(input::SCENE, format!("the recording: {e}")))?;
             Ok((checked.scene.name.clone(), bytes))
         })
@@ -451,7 +491,7 @@ async fn frame_stroke(
 #[serde(deny_unknown_fields)]
 struct JobQuery {
     #[serde(default)]
-    since: Option<usize>,
+    since: Option<String>,
 }
 
 async fn job(
@@ -460,12 +500,13 @@ async fn job(
     query: Result<Query<JobQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<JobStatus>, ApiError> {
     let id = job_id(id)?;
-    let Query(q) = query.map_err(|e| ApiError::bad(body::REQUEST, "", e.body_text()))?;
+    let Query(q) = query.map_err(query_error)?;
+    let since = whole::<usize>("since", q.since.as_deref())?;
     let job = lab
         .jobs
         .get(id)
         .ok_or_else(|| ApiError::not_found(format!("no job {id}")))?;
-    Ok(Json(job.status_since(q.since)))
+    Ok(Json(job.status_since(since)))
 }
 
 async fn job_cancel(

@@ -21,6 +21,9 @@ pub struct Limits {
     pub path_points: usize,
     /// Highest sample rate of the paths, Hz.
     pub path_rate: f64,
+    /// Most ball samples of a recording to download (every ball at every instant; the
+    /// break-off's is about 27,000 at 120 Hz): the rate is lowered to fit.
+    pub recording_samples: usize,
     /// Most noise samples per planned shot.
     pub plan_samples: usize,
     /// Most alternative shots of a plan.
@@ -56,6 +59,7 @@ impl Default for Limits {
             sim_time: 600.0,
             path_points: 80_000,
             path_rate: 240.0,
+            recording_samples: 60_000,
             plan_samples: 1024,
             plan_alternatives: 5,
             plan_tolerance: 1e-4,

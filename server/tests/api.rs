@@ -195,6 +195,7 @@ async fn requests_are_bounded() {
     let app = router(Config {
         limits,
         recorder: None,
+        hosts: Default::default(),
     });
     // A body over the limit is refused before it is read whole.
     let (s, _) = raw(&app, "POST", "/api/simulate", vec![b' '; 10_000]).await;
@@ -222,6 +223,7 @@ async fn requests_are_bounded() {
             ..Limits::default()
         },
         recorder: None,
+        hosts: Default::default(),
     });
     let mut long = scene_json(CUT_30);
     long["sim"] = json!({"max_time": 3600.0});
@@ -356,6 +358,7 @@ async fn a_job_outliving_its_wall_time_is_cancelled() {
     let app = router(Config {
         limits,
         recorder: None,
+        hosts: Default::default(),
     });
     let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
     let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
@@ -381,6 +384,7 @@ async fn finished_jobs_are_kept_within_the_byte_limit() {
             ..Limits::default()
         },
         recorder: None,
+        hosts: Default::default(),
     });
     let mut ids = Vec::new();
     for _ in 0..4 {
@@ -572,6 +576,7 @@ async fn a_queued_job_cancelled_leaves_the_queue_at_once() {
             ..Limits::default()
         },
         recorder: None,
+        hosts: Default::default(),
     });
     let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
     let (s, v) = call(&app, "POST", "/api/plan", Some(req.clone())).await;
@@ -625,6 +630,7 @@ async fn a_shot_that_cannot_finish_is_named_once_as_the_command_line_says() {
             ..Limits::default()
         },
         recorder: None,
+        hosts: Default::default(),
     });
     let (s, v) = call(
         &app,
@@ -852,4 +858,216 @@ async fn a_frame_files_own_strike_is_the_strike_offered() {
     assert_eq!(cue["speed"].as_f64(), Some(1.5));
     assert_eq!(cue["aim"].as_f64(), Some(std::f64::consts::FRAC_PI_4));
     assert_eq!(cue["offset"], json!([0.0, -0.012]));
+}
+
+/// A recorder that makes no recording, only says which rate it was asked for.
+struct RateOnly;
+
+impl snooker_server::Recorder for RateOnly {
+    fn shot(
+        &self,
+        _: &snooker_scene::Scene,
+        _: &snooker_engine::Shot,
+        rate: f64,
+    ) -> Result<Vec<u8>, String> {
+        Ok(rate.to_string().into_bytes())
+    }
+}
+
+#[tokio::test]
+async fn a_recording_to_download_is_bounded_like_the_paths() {
+    // A long shot on frictionless cloth (600 s, four balls moving) made a 100 MB recording
+    // and took 1.5 GB of memory: the recording's rate is now lowered to fit
+    // Limits::recording_samples, as the paths' is to fit path_points.
+    let limits = Limits::default();
+    let app = router(Config {
+        limits,
+        recorder: Some(std::sync::Arc::new(RateOnly)),
+        hosts: Default::default(),
+    });
+    let rate = |v: Vec<u8>| String::from_utf8(v).unwrap().parse::<f64>().unwrap();
+    let body = |scene: Value| json!({"scene": scene}).to_string().into_bytes();
+    // The break-off fits at the command line's rate.
+    let break_off = scene_json(include_str!("../../scenes/break-off.toml"));
+    let (s, v) = raw(&app, "POST", "/api/download/recording", body(break_off)).await;
+    assert_eq!(s, StatusCode::OK);
+    assert_eq!(rate(v), limits.path_rate);
+    let endless = json!({
+        "table": {"kind": "open"},
+        "params": {"mu_roll": 0.0, "mu_slide": 0.0, "sidespin_decel": 0.0},
+        "sim": {"horizon": 600.0},
+        "balls": [
+            {"id": "a", "pos": [0.0, 0.0], "vel": [1.0, 0.0, 0.0]},
+            {"id": "b", "pos": [0.0, 1.0], "vel": [1.0, 0.0, 0.0]},
+            {"id": "c", "pos": [0.0, 2.0], "vel": [1.0, 0.0, 0.0]},
+            {"id": "d", "pos": [0.0, 3.0], "vel": [1.0, 0.0, 0.0]},
+        ],
+    });
+    let (s, v) = raw(&app, "POST", "/api/download/recording", body(endless)).await;
+    assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&v));
+    let r = rate(v);
+    // 4 balls x (600 s x rate + the end and start instants) within the bound.
+    assert!(r < limits.path_rate, "{r}");
+    assert!(
+        4.0 * (600.0 * r + 2.0) <= limits.recording_samples as f64,
+        "{r}"
+    );
+}
+
+/// A request with these headers on `app`: its status and the key of its error.
+async fn with_headers(app: &Router, path: &str, headers: &[(&str, &str)]) -> (StatusCode, Value) {
+    let mut req = Request::builder().method("GET").uri(path);
+    for (k, v) in headers {
+        req = req.header(*k, *v);
+    }
+    let r = app
+        .clone()
+        .oneshot(req.body(Body::empty()).unwrap())
+        .await
+        .unwrap();
+    let status = r.status();
+    let bytes = r.into_body().collect().await.unwrap().to_bytes();
+    (
+        status,
+        serde_json::from_slice(&bytes).unwrap_or(Value::Null),
+    )
+}
+
+#[tokio::test]
+async fn only_requests_to_the_loopback_are_answered() {
+    // DNS rebinding: a page of another site made its own name resolve to 127.0.0.1 and the
+    // lab answered it (a visit started, its answers read); a form posted from another origin
+    // cancelled the user's jobs.
+    let app = app();
+    for host in ["127.0.0.1:8080", "localhost:8080", "[::1]:8080"] {
+        let (s, _) = with_headers(&app, "/api/info", &[("host", host)]).await;
+        assert_eq!(s, StatusCode::OK, "{host}");
+    }
+    let (s, v) = with_headers(&app, "/api/info", &[("host", "rebind.example:8080")]).await;
+    assert_eq!(s, StatusCode::FORBIDDEN);
+    assert_eq!(v["key"], "host", "{v}");
+    let (s, v) = with_headers(
+        &app,
+        "/",
+        &[
+            ("host", "127.0.0.1:8080"),
+            ("origin", "http://evil.example"),
+        ],
+    )
+    .await;
+    assert_eq!(s, StatusCode::FORBIDDEN);
+    assert_eq!(v["key"], "origin", "{v}");
+    // A lab bound elsewhere on purpose answers any name.
+    let open = router(Config {
+        hosts: snooker_server::guard::HostCheck::Any,
+        ..Config::default()
+    });
+    let (s, _) = with_headers(&open, "/api/info", &[("host", "lab.local:8080")]).await;
+    assert_eq!(s, StatusCode::OK);
+}
+
+#[tokio::test]
+async fn errors_name_the_missing_key_and_refuse_what_a_request_does_not_take() {
+    let app = app();
+    // A missing key gave key "" (its name only in the reason).
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/plan",
+        Some(json!({"scene": scene_json(CH7)})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "pot", "{v}");
+    assert_eq!(v["status"], 400, "{v}");
+    let (s, v) = call(&app, "GET", "/api/jobs/1?since=-1", None).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "since", "{v}");
+    let (s, v) = call(&app, "GET", "/api/jobs/1?after=2", None).await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["key"], "after", "{v}");
+    // A rate was taken and ignored where nothing is sampled.
+    let scene = scene_json(CUT_30);
+    for path in [
+        "/api/scene/check",
+        "/api/download/scene",
+        "/api/download/result",
+    ] {
+        let (s, v) = call(
+            &app,
+            "POST",
+            path,
+            Some(json!({"scene": scene, "rate": -1})),
+        )
+        .await;
+        assert_eq!(s, StatusCode::BAD_REQUEST, "{path}");
+        assert_eq!(v["key"], "rate", "{path}: {v}");
+    }
+    // Arrays were read by position.
+    let (s, _) = raw(
+        &app,
+        "POST",
+        "/api/simulate",
+        json!([scene, 60]).to_string().into(),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    let (s, v) = call(
+        &app,
+        "POST",
+        "/api/simulate",
+        Some(json!({"scene": [1, 2]})),
+    )
+    .await;
+    assert_eq!(s, StatusCode::BAD_REQUEST);
+    assert_eq!(v["file"], "scene", "{v}");
+    // A declared length over the limit is refused before the body is read.
+    let req = Request::builder()
+        .method("POST")
+        .uri("/api/simulate")
+        .header("content-type", "application/json")
+        .header("content-length", "1000000000")
+        .body(Body::empty())
+        .unwrap();
+    let r = app.clone().oneshot(req).await.unwrap();
+    assert_eq!(r.status(), StatusCode::PAYLOAD_TOO_LARGE);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_cancel_shows_at_once_and_a_failed_job_says_its_status() {
+    let app = app();
+    let req = json!({"scene": scene_json(CH7), "pot": "red", "pocket": "middle-left", "target": [1.2, 0.6], "samples": 1024});
+    let (_, v) = call(&app, "POST", "/api/plan", Some(req)).await;
+    let id = v["id"].as_u64().unwrap();
+    loop {
+        let (_, v) = call(&app, "GET", &format!("/api/jobs/{id}"), None).await;
+        if v["state"] == "running" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    }
+    // The answer to the cancel said "running" and nothing else.
+    let (_, v) = call(&app, "POST", &format!("/api/jobs/{id}/cancel"), None).await;
+    assert!(
+        v["state"] == "cancelled" || v["reason"] == "cancelled on request",
+        "{v}"
+    );
+    wait(&app, id).await;
+    // A ball that cannot be potted: the job fails with the 422 the docs promise in its error.
+    let blocked = json!({
+        "balls": [
+            {"id": "cue", "pos": [1.0, 0.9]},
+            {"id": "red", "pos": [1.3, 0.9]},
+            {"id": "b1", "pos": [1.3, 0.9525]},
+            {"id": "b2", "pos": [1.3, 0.8475]},
+            {"id": "b3", "pos": [1.3525, 0.9]},
+            {"id": "b4", "pos": [1.2475, 0.9]},
+        ],
+    });
+    let req = json!({"scene": blocked, "pot": "red", "pocket": "top-left", "target": [1.2, 0.6], "samples": 8});
+    let (s, v) = call(&app, "POST", "/api/plan", Some(req)).await;
+    assert_eq!(s, StatusCode::ACCEPTED, "{v}");
+    let end = wait(&app, v["id"].as_u64().unwrap()).await;
+    assert_eq!(end["state"], "failed", "{end}");
+    assert_eq!(end["error"]["status"], 422, "{end}");
 }

@@ -7,6 +7,7 @@ use super::{bad_input, failed};
 use crate::record;
 use snooker_engine::Shot;
 use snooker_scene::Scene;
+use snooker_server::guard::HostCheck;
 use snooker_server::{Config, Limits, Recorder};
 use std::net::{IpAddr, SocketAddr};
 use std::process::ExitCode;
@@ -31,8 +32,12 @@ pub struct Args {
 struct Rerun;
 
 impl Recorder for Rerun {
-    fn shot(&self, scene: &Scene, shot: &Shot) -> Result<Vec<u8>, String> {
-        record::encode(scene, shot, &record::RecordOptions::default()).map_err(|e| e.to_string())
+    fn shot(&self, scene: &Scene, shot: &Shot, rate: f64) -> Result<Vec<u8>, String> {
+        let opts = record::RecordOptions {
+            rate,
+            ..Default::default()
+        };
+        record::encode(scene, shot, &opts).map_err(|e| e.to_string())
     }
 }
 
@@ -77,9 +82,16 @@ pub fn run(args: Args) -> ExitCode {
         if args.open {
             open(&url);
         }
+        // Bound elsewhere on purpose, the lab is reached by names it cannot know.
+        let hosts = if args.host.is_loopback() {
+            HostCheck::Loopback
+        } else {
+            HostCheck::Any
+        };
         let app = snooker_server::router(Config {
             limits: Limits::default(),
             recorder: Some(Arc::new(Rerun)),
+            hosts,
         });
         let stop = async {
             let _ = tokio::signal::ctrl_c().await;

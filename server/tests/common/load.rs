@@ -229,6 +229,7 @@ pub async fn run(
             router(Config {
                 limits,
                 recorder: None,
+                hosts: Default::default(),
             }),
         )
         .await
