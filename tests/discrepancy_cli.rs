@@ -405,6 +405,28 @@ fn bad_data_files_are_rejected_with_file_key_line_and_column() {
         ],
         &["o.csv", "line 2", "sigma"],
     );
+    // A measurement repeated would weigh twice (Table I with one row doubled named nothing),
+    // as a track's sample repeated is refused.
+    rejects(
+        &dir,
+        "scene = \"s.toml\"\nobservables = \"o.csv\"\n",
+        &[
+            scene_file,
+            (
+                "o.csv",
+                "shot,ball,quantity,when,value,sigma\n,cue,speed,after:ball_cushion#1,1.0,0.02\n\
+                 ,cue,speed,after:ball_cushion#1,1.1,0.02\n",
+            ),
+        ],
+        &["o.csv", "line 3", "measured twice (line 2 too)"],
+    );
+    // Too few measured values for what `fit` asks: bad input (it was exit 1, naming no key).
+    rejects(
+        &dir,
+        &good.replace("strike.speed", "cue.vel\", \"cue.spin"),
+        &[scene_file, ("t.csv", &csv("0.0,cue,1.0,0.5\n"))],
+        &["d.toml", "key `fit`", "2 residuals", "5 unknowns"],
+    );
     rejects(
         &dir,
         "scene = \"missing.toml\"\nobservables = \"o.csv\"\n",
@@ -496,6 +518,22 @@ fn bad_synth_requests_are_rejected_and_write_nothing() {
         (vec!["--noise", "0.0001"], "--noise 0.0001"),
         (vec!["--fit", "cue.colour"], "--fit cue.colour"),
         (vec!["--param", "mu_rol=0.01"], "unknown parameter"),
+        // A negative value read as an unknown flag ("unexpected argument '-1'"); a camera
+        // setting blamed on the scene file; the noise (mm) told in m.
+        (
+            vec!["--fps", "-10"],
+            "--fps -10: must be between 0 and 10000",
+        ),
+        (vec!["--drop", "1.5"], "--drop 1.5: must be"),
+        (
+            vec!["--noise", "200"],
+            "--noise 200: must be between 0.001 and 100 mm",
+        ),
+        // The data file listed both as the hidden truth and only the last was hidden.
+        (
+            vec!["--effect", "nap_drift=0.02", "--effect", "nap_drift=0.03"],
+            "hidden twice",
+        ),
     ] {
         let mut a = vec!["synth", "scenes/one-cushion.toml", "-o", s(&out)];
         a.extend(args);
@@ -680,4 +718,44 @@ fn json_to_standard_output() {
     assert!(err.contains("named: ball_friction"), "{err}");
     assert!(!dir.join("-").exists(), "a file named -");
     std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn observables_in_several_units_are_not_summed_as_one() {
+    // A speed in m/s and a heading in degrees made one "RMS 10.2003 in their units", and
+    // its percentage silently left the heading out.
+    let dir = temp_dir("mixed-units");
+    let root = std::env::current_dir().unwrap();
+    let scene = root.join("scenes/table-i-1.toml");
+    let rows: String = std::fs::read_to_string("data/discrepancy/table-i.csv")
+        .unwrap()
+        .lines()
+        .filter(|l| l.starts_with("table-i-1,"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    std::fs::write(
+        dir.join("o.csv"),
+        format!(
+            "shot,ball,quantity,when,value,sigma\n{rows}table-i-1,red,heading,rolling:ball_ball#1,0.0,1.0\n"
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("d.toml"),
+        format!(
+            "observables = \"o.csv\"\n[[shots]]\nscene = {:?}\n",
+            scene.display().to_string()
+        ),
+    )
+    .unwrap();
+    let o = snooker(&[
+        "discrepancy",
+        s(&dir.join("d.toml")),
+        "--model",
+        "data/discrepancy/ideal-ball.toml",
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.contains("across mixed units (m/s, degrees"), "{out}");
+    assert!(!out.contains("in their units"), "{out}");
 }

@@ -297,6 +297,9 @@ fn read_observables(path: &Path, shots: &[ShotData]) -> Result<Vec<Vec<Observabl
     let text = scene::read_text(path)
         .map_err(|e| error(path, "", format!("cannot read the observables: {e}")))?;
     let mut out = vec![Vec::new(); shots.len()];
+    // Each (shot, ball, quantity, when) once: a row repeated would weigh twice in the fit
+    // (Table I with one row doubled named nothing), as a track's sample repeated is refused.
+    let mut seen: Vec<(usize, usize, usize, String, usize)> = Vec::new();
     let header = ["shot", "ball", "quantity", "when", "value", "sigma"];
     for (n, f) in csv_rows(&text, path, &header)? {
         let at = |col: usize, reason: String| {
@@ -354,6 +357,24 @@ fn read_observables(path: &Path, shots: &[ShotData]) -> Result<Vec<Vec<Observabl
                 format!("sigma must be at least {MIN_SIGMA:e} {unit}, got {sigma:e}"),
             ));
         }
+        let q = Quantity::ALL
+            .iter()
+            .position(|(q, _)| *q == quantity)
+            .unwrap_or(0);
+        let key = (k, ball, q, f[3].1.to_string());
+        if let Some(first) = seen
+            .iter()
+            .find(|s| (s.0, s.1, s.2, &s.3) == (key.0, key.1, key.2, &key.3))
+        {
+            return Err(at(
+                f[0].0,
+                format!(
+                    "{} of ball `{}` {} is measured twice (line {} too): each once",
+                    f[2].1, f[1].1, f[3].1, first.4
+                ),
+            ));
+        }
+        seen.push((key.0, key.1, key.2, key.3, n));
         out[k].push(Observable {
             ball,
             quantity,

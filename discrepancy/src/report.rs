@@ -145,8 +145,9 @@ fn format_fitted(f: &Fitted) -> String {
         .join(", ")
 }
 
-/// The gaps as text: positions in mm (with tracks), observables in their units (with them).
-fn format_gaps(pos: &Gap, obs: &Gap, tracks: bool, observables: bool) -> String {
+/// The gaps as text: positions in mm (with tracks), observables in their units (with them;
+/// `observables` says which: one unit, or several that an RMS mixes).
+fn format_gaps(pos: &Gap, obs: &Gap, tracks: bool, observables: Option<&str>) -> String {
     let mut parts = Vec::new();
     if tracks {
         parts.push(format!(
@@ -155,21 +156,43 @@ fn format_gaps(pos: &Gap, obs: &Gap, tracks: bool, observables: bool) -> String 
             pos.max * 1e3
         ));
     }
-    if observables {
+    if let Some(units) = observables {
         parts.push(format!(
-            "observables off by RMS {:.4}, max {:.4} in their units",
+            "observables off by RMS {:.4}, max {:.4} {units}",
             obs.rms, obs.max
         ));
     }
     parts.join("; ")
 }
 
-fn format_state(label: &str, s: &State, tracks: bool, observables: bool) -> String {
+/// How the observables' gaps are told: "in their units" when they share one; when they mix
+/// several (a speed in m/s and a heading in degrees) an RMS across them is no one measure,
+/// and the text says so rather than print it as one.
+fn observable_units(m: &Measurement) -> Option<String> {
+    let mut units: Vec<&str> = Vec::new();
+    for o in m.shots.iter().flat_map(|s| &s.observables) {
+        let u = o.quantity.unit();
+        if !units.contains(&u) {
+            units.push(u);
+        }
+    }
+    match units.len() {
+        0 => None,
+        1 => Some("in their units".into()),
+        _ => Some(format!(
+            "across mixed units ({}: no single measure; the % average leaves out values \
+             measured as 0)",
+            units.join(", ")
+        )),
+    }
+}
+
+fn format_state(label: &str, s: &State, tracks: bool, observables: Option<&str>) -> String {
     let mut out = format!(
         "{label}: {}",
         format_gaps(&s.gap, &s.observable_gap, tracks, observables)
     );
-    if observables {
+    if observables.is_some() {
         out += &format!(" ({:.2}% on average)", 100.0 * s.mean_relative_error);
     }
     out + &format!("; chi2/dof {:.2}\n", s.reduced_chi2)
@@ -177,7 +200,8 @@ fn format_state(label: &str, s: &State, tracks: bool, observables: bool) -> Stri
 
 /// A plain-text summary of `o`.
 pub fn text(m: &Measurement, o: &Findings) -> String {
-    let observables = m.shots.iter().any(|s| !s.observables.is_empty());
+    let units = observable_units(m);
+    let observables = units.as_deref();
     let tracks = m.shots.iter().any(|s| !s.samples.is_empty());
     let mut out = format_state("start", &o.baseline_state, tracks, observables);
     if let Some(w) = &o.baseline_state.location.worst {
@@ -193,7 +217,12 @@ pub fn text(m: &Measurement, o: &Findings) -> String {
         out += &format!(
             "step {}: {label}{} {} (BIC {:.0}): {}\n  {}\n",
             k + 1,
-            if s.refit { "refitted" } else { "named" },
+            // A tentative step names nothing: it was tried.
+            match (s.refit, label.is_empty()) {
+                (true, _) => "refitted",
+                (false, true) => "named",
+                (false, false) => "tried",
+            },
             s.effect.id(),
             s.delta_bic,
             format_fitted(f),

@@ -69,6 +69,17 @@ pub fn run(args: Args) -> ExitCode {
     }
     let findings = match dsc::run(&m, &dsc::Options::default()) {
         Ok(o) => o,
+        // Too few measured values for what `fit` asks: the data's fault, not the run's.
+        Err(snooker_discrepancy::DiscrepancyError::TooFewResiduals {
+            residuals,
+            unknowns,
+        }) => {
+            return bad_input(format!(
+                "{}: key `fit`: the measurements give {residuals} residuals, fewer than the \
+                 {unknowns} unknowns fitted (a track of too few samples?)",
+                args.data.display()
+            ));
+        }
         Err(e) => return failed(format!("{}: {e}", args.data.display())),
     };
     // With the JSON on standard output, the summary goes to standard error.

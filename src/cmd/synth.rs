@@ -7,7 +7,7 @@ use crate::output::{check_output, write_atomic};
 use anyhow::{Context, bail};
 use snooker_discrepancy::data_file;
 use snooker_discrepancy::synth::{Camera, Hidden, Uncatalogued, film};
-use snooker_discrepancy::{Effect, Model};
+use snooker_discrepancy::{DiscrepancyError, Effect, Model};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -26,19 +26,24 @@ pub struct Args {
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Camera frames per second.
-    #[arg(long, default_value_t = 100.0)]
+    #[arg(long, default_value_t = 100.0, allow_negative_numbers = true)]
     fps: f64,
     /// Camera position noise, 1-sigma per coordinate, millimetres.
-    #[arg(long, value_name = "MM", default_value_t = 0.5)]
+    #[arg(
+        long,
+        value_name = "MM",
+        default_value_t = 0.5,
+        allow_negative_numbers = true
+    )]
     noise: f64,
     /// Seed of the noise and the dropped frames.
     #[arg(long, default_value_t = 1)]
     seed: u64,
     /// Share of frames lost.
-    #[arg(long, default_value_t = 0.02)]
+    #[arg(long, default_value_t = 0.02, allow_negative_numbers = true)]
     drop: f64,
     /// Longest recording, s.
-    #[arg(long, default_value_t = 20.0)]
+    #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
     duration: f64,
     /// Initial quantities the data file asks to fit, comma-separated (default: the
     /// strike's speed, or every moving ball's vel and spin).
@@ -71,6 +76,23 @@ pub fn run(args: Args) -> ExitCode {
         seed: args.seed,
         max_duration: args.duration,
     };
+    // The camera's settings are flags: named as given (the noise in mm), not blamed on the
+    // scene file as the film's own check would.
+    if let Err(DiscrepancyError::Camera { setting, range, .. }) =
+        snooker_discrepancy::synth::check_camera(&camera)
+    {
+        let (flag, given, range) = match setting {
+            "fps" => ("--fps", args.fps, range.to_string()),
+            "noise" => (
+                "--noise",
+                args.noise,
+                "between 0.001 and 100 mm".to_string(),
+            ),
+            "drop rate" => ("--drop", args.drop, range.to_string()),
+            _ => ("--duration", args.duration, "positive (s)".to_string()),
+        };
+        return bad_input(format!("{flag} {given}: must be {range}"));
+    }
     match synth(&args, &camera) {
         Ok(text) => {
             out!("{text}");
@@ -84,10 +106,20 @@ pub fn run(args: Args) -> ExitCode {
 /// effect's admissible range under the model they are added to.
 fn hidden(effects: &[String], base: &Model) -> anyhow::Result<Hidden> {
     let mut h = Hidden::default();
+    let mut named: Vec<&str> = Vec::new();
     for spec in effects {
         let (name, values) = spec
             .split_once('=')
             .with_context(|| format!("--effect {spec}: expected NAME=VALUE[,VALUE]"))?;
+        // The data file lists every --effect as the hidden truth: a second value for one
+        // effect would be listed but not used.
+        if named.contains(&name.trim()) {
+            bail!(
+                "--effect {spec}: {} is hidden twice; give it once",
+                name.trim()
+            );
+        }
+        named.push(name.trim());
         let values: Vec<f64> = values
             .split(',')
             .map(|v| {
