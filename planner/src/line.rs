@@ -80,6 +80,10 @@ impl Line {
 const MAX_CUT: f64 = 80.0 * std::f64::consts::PI / 180.0;
 /// Most cut of a plant's second contact, rad (a plant's error grows as 1/cos of it).
 const MAX_PLANT_CUT: f64 = 70.0 * std::f64::consts::PI / 180.0;
+/// Largest gap between two balls that makes them a set for a plant, m: within it the
+/// ghost-ball geometry degenerates and the object ball leaves along the line of centres
+/// (a review found touching balls, and a 0.1 mm gap, refused; 1 mm was planned as usual).
+pub const SET_GAP: f64 = 1e-3;
 /// A double's cushion contact must lie this far (m) inside the cushion's nose segment.
 const CUSHION_MARGIN: f64 = 0.01;
 
@@ -269,8 +273,7 @@ impl Problem {
             }
             ShotKind::Plant => {
                 let a = self.pos(line.ball?);
-                let go = ghost(o, at, r);
-                let ga = ghost(a, go, r);
+                let (ga, _) = self.plant_geometry(a, o, at);
                 Some((heading(ga), cut(c, ga, a)))
             }
             ShotKind::Kiss => {
@@ -279,6 +282,35 @@ impl Problem {
                 Some((heading(g), cut(c, g, o)))
             }
         }
+    }
+
+    /// Where the cue ball meets ball `a` (its ghost) to plant the object ball at `o` into the
+    /// pocket's `at`, and the cut of the second contact: the ghost-ball geometry (`a` sent to
+    /// the object ball's ghost). Two balls touching, or all but ([`SET_GAP`]), are a set: the
+    /// ghost geometry degenerates (the object ball's ghost lies in `a`, the second cut comes
+    /// out near 90 degrees and the plant was dropped before any shot was tried), while the
+    /// object ball leaves along the line of centres whatever way `a` is pushed. A set whose
+    /// line of centres carries the object ball's centre within the mouth (half its width less
+    /// a radius of its middle) is planted by sending `a` straight at the object ball, its
+    /// second cut the angle between that line and the pocket.
+    fn plant_geometry(&self, a: Vec3, o: Vec3, at: Vec3) -> (Vec3, f64) {
+        let r = self.setup.params.ball_radius;
+        let go = ghost(o, at, r);
+        let ghosted = (ghost(a, go, r), cut(a, go, o));
+        if ghosted.1 < MAX_PLANT_CUT || (o - a).norm() > 2.0 * r + SET_GAP {
+            return ghosted;
+        }
+        let along = unit(o - a);
+        let to_pocket = at - o;
+        let off = (along.x * to_pocket.y - along.y * to_pocket.x).abs();
+        let mouth = self.setup.table.pockets[self.pocket].mouth_width;
+        if along.dot(&to_pocket) <= 0.0 || off > 0.5 * mouth - r {
+            return ghosted;
+        }
+        let second = (along.x * to_pocket.y - along.y * to_pocket.x)
+            .atan2(along.dot(&to_pocket))
+            .abs();
+        (ghost(a, o, r), second)
     }
 
     /// Every line of the object ball into the pocket whose geometry is open (paths clear of
@@ -334,9 +366,9 @@ impl Problem {
         for &ai in &others {
             let a = self.pos(ai);
             let go = ghost(o, at, r);
-            let ga = ghost(a, go, r);
+            let (ga, second) = self.plant_geometry(a, o, at);
             if cut(c, ga, a) < MAX_CUT
-                && cut(a, go, o) < MAX_PLANT_CUT
+                && second < MAX_PLANT_CUT
                 && self.clear(c, ga, &[ci, ai])
                 && self.clear(a, go, &[ai, oi])
                 && self.clear(o, at, &[oi])

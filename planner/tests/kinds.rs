@@ -71,3 +71,25 @@ fn a_direct_pot_reads_as_direct() {
     );
     assert_eq!(k, ShotKind::Direct);
 }
+
+#[test]
+fn a_set_of_touching_balls_is_planted() {
+    // A red touching the blue, their line of centres at the top-right pocket: the ghost-ball
+    // geometry degenerates (the blue's ghost lies in the red) and the plant was dropped before
+    // any shot was tried: "cannot be potted", exit 1, where a centre-ball strike at the red
+    // pots the blue. With a gap of 0.1 mm too.
+    for red in [
+        "2.955367718634788, 0.3774539516306224",
+        "2.9552825425253126, 0.37750634466808536",
+    ] {
+        let k = planned_kind(
+            &format!(
+                r#"{{id = "cue", pos = [2.0, 0.9]}}, {{id = "red", pos = [{red}]}}, {{id = "blue", pos = [3.0, 0.35]}}"#
+            ),
+            "blue",
+            "top-right",
+            ShotKind::Plant,
+        );
+        assert_eq!(k, ShotKind::Plant);
+    }
+}
