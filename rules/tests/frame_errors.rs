@@ -313,10 +313,13 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
     let read = snooker_rules::parse(&frame("on = \"red\"", &red_and_cue()), "ok.toml")
         .unwrap()
         .frame;
-    let rebuild = |balls: Vec<snooker_engine::Ball>, options: snooker_engine::SimOptions| {
+    // The frame read, rebuilt with another table, balls or limits.
+    let rebuild = |table: snooker_engine::Table,
+                   balls: Vec<snooker_engine::Ball>,
+                   options: snooker_engine::SimOptions| {
         snooker_rules::Frame::new(
             read.name(),
-            read.table().clone(),
+            table,
             *read.params(),
             *read.models(),
             options,
@@ -324,17 +327,19 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
             *read.state(),
         )
     };
-    assert!(rebuild(read.balls().to_vec(), *read.options()).is_ok());
+    let with_balls = |balls| rebuild(read.table().clone(), balls, *read.options());
+    let with_table = |table| rebuild(table, read.balls().to_vec(), *read.options());
+    assert!(with_balls(read.balls().to_vec()).is_ok());
     let mut floating = read.balls().to_vec();
     floating[2].state.pos.z += 0.05;
-    let e = rebuild(floating, *read.options()).unwrap_err();
+    let e = with_balls(floating).unwrap_err();
     assert_eq!(e.key.to_string(), "balls[2].pos", "{e}");
     assert!(e.to_string().contains("off the cloth"), "{e}");
     let nan = snooker_engine::SimOptions {
         max_time: f64::NAN,
         ..*read.options()
     };
-    let e = rebuild(read.balls().to_vec(), nan).unwrap_err();
+    let e = rebuild(read.table().clone(), read.balls().to_vec(), nan).unwrap_err();
     assert_eq!(e.key.to_string(), "sim.max_time", "{e}");
     // A table no frame file describes: its file (to_toml) wrote only the pocket sizes and
     // read back another frame.
@@ -342,45 +347,20 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
         length: 3.0,
         ..Default::default()
     });
-    let e = snooker_rules::Frame::new(
-        read.name(),
-        other,
-        *read.params(),
-        *read.models(),
-        *read.options(),
-        read.balls().to_vec(),
-        *read.state(),
-    )
-    .unwrap_err();
+    let e = with_table(other).unwrap_err();
     assert_eq!(e.key.to_string(), "table", "{e}");
     let mut moved = read.table().clone();
     moved.cushions[0].start.x += 0.01;
     moved.cushions[0].end.x += 0.01;
-    let e = snooker_rules::Frame::new(
-        read.name(),
-        moved,
-        *read.params(),
-        *read.models(),
-        *read.options(),
-        read.balls().to_vec(),
-        *read.state(),
-    )
-    .unwrap_err();
+    let e = with_table(moved).unwrap_err();
     assert_eq!(e.key.to_string(), "table", "{e}");
     // Pocket sizes are the file's to choose: that table reads back.
-    let pockets = snooker_engine::SnookerDims {
-        corner_mouth: 0.1,
-        ..Default::default()
-    };
-    let f = snooker_rules::Frame::new(
-        read.name(),
-        snooker_engine::Table::snooker(&pockets),
-        *read.params(),
-        *read.models(),
-        *read.options(),
-        read.balls().to_vec(),
-        *read.state(),
-    )
+    let f = with_table(snooker_engine::Table::snooker(
+        &snooker_engine::SnookerDims {
+            corner_mouth: 0.1,
+            ..Default::default()
+        },
+    ))
     .unwrap();
     let back = snooker_rules::parse(&f.to_toml(None), "back.toml")
         .unwrap()
