@@ -289,3 +289,37 @@ fn an_endless_input_is_refused_not_read_for_ever() {
         refused(args, &["/dev/zero", "256 MiB"]);
     }
 }
+
+#[test]
+fn the_result_says_why_the_shot_ended() {
+    // A shot stopped at its horizon showed moving balls in `final`, which the contract says
+    // are at rest: `ending` (an extension) tells the two apart, read as a script reads it.
+    let dir = temp_dir("ending");
+    let scene = dir.join("s.toml");
+    for (sim, ending, motion) in [
+        ("", "at_rest", "stationary"),
+        ("[sim]\nhorizon = 0.5\n", "horizon", "rolling"),
+    ] {
+        std::fs::write(
+            &scene,
+            format!(
+                "balls = [{{id = \"cue\", pos = [1.0, 0.8], vel = [1.0, 0.0, 0.0], spin = [0.0, 38.17, 0.0]}}]\n{sim}"
+            ),
+        )
+        .unwrap();
+        let o = snooker(&["simulate", scene.to_str().unwrap(), "-q", "--json", "-"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(doc["ending"], ending, "{sim}");
+        assert_eq!(doc["final"]["cue"]["motion"], motion, "{sim}");
+        // After `duration`, as the extension is documented.
+        let keys: Vec<&str> = doc
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        let at = |k: &str| keys.iter().position(|x| *x == k).unwrap();
+        assert_eq!(at("ending"), at("duration") + 1, "{keys:?}");
+    }
+}
