@@ -670,3 +670,125 @@ pos = [0.24538999137338072, 0.0398922899012327]"#);
         "{touches:?}"
     );
 }
+
+#[test]
+fn a_wide_deep_pocket_keeps_a_ball_in_it_or_on_the_table() {
+    // Found (an independent generator, stop 42): with a wide mouth and a deep fall (both
+    // within the [table] keys' ranges: corner_mouth = 0.2, fall_depth = 0.385), a red rolled
+    // past the jaws, beside the fall and past a facing's end, and came to rest 3 m outside the
+    // table, neither potted nor off it. The facings now reach past the fall's back, which pots
+    // a ball that meets it (detect/pocket.rs). Every ball here ends potted, off the table by
+    // an event, or at rest where a scene may place it (the shelf of a deep pocket included).
+    let r = 0.0262;
+    let mut shots = 0;
+    for (mouth_key, mouth, pocket, starts) in [
+        (
+            "corner_mouth",
+            0.09,
+            [0.0, 0.0],
+            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
+        ),
+        (
+            "corner_mouth",
+            0.12,
+            [0.0, 0.0],
+            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
+        ),
+        (
+            "corner_mouth",
+            0.2,
+            [0.0, 0.0],
+            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
+        ),
+        (
+            "middle_mouth",
+            0.15,
+            [1.7845, 0.0],
+            [[1.5, 0.3], [2.1, 0.3], [1.79, 0.5]],
+        ),
+        (
+            "middle_mouth",
+            0.3,
+            [1.7845, 0.0],
+            [[1.5, 0.3], [2.1, 0.3], [1.79, 0.5]],
+        ),
+    ] {
+        for fall_depth in [0.0, 0.2, 0.385, 0.5] {
+            for start in starts {
+                for across in [-0.8, -0.4, 0.0, 0.4, 0.8] {
+                    for (speed, lift) in [(0.5, 0.0), (1.0, 0.0), (3.0, 0.0), (2.0, 1.5)] {
+                        // Aim at a point across the mouth's line (corner: x + y = const).
+                        let target = if pocket[0] == 0.0 {
+                            let h = 0.5 * mouth / 2f64.sqrt();
+                            [h + across * h, h - across * h]
+                        } else {
+                            [pocket[0] + across * 0.5 * mouth, 0.0]
+                        };
+                        let (dx, dy) = (target[0] - start[0], target[1] - start[1]);
+                        let n = dx.hypot(dy);
+                        let (vx, vy) = (speed * dx / n, speed * dy / n);
+                        let scene = format!(
+                            "[table]\n{mouth_key} = {mouth}\nfall_depth = {fall_depth}\n\
+                             [[balls]]\nid = \"red\"\npos = [{}, {}]\nvel = [{vx}, {vy}, {lift}]\n\
+                             spin = [{}, {}, 0.0]\n",
+                            start[0],
+                            start[1],
+                            -vy / r,
+                            vx / r
+                        );
+                        let (scene, shot) = run(&scene);
+                        assert!(
+                            audit::audit(&scene.setup, &shot).is_empty(),
+                            "{mouth_key} {mouth} fall {fall_depth} from {start:?} across {across} at {speed}"
+                        );
+                        let end = shot.final_states()[0];
+                        if end.motion == Motion::Stationary {
+                            let table = &scene.setup.table;
+                            let contact = shot.params.cushion_contact_distance();
+                            assert_eq!(
+                                table.placement_error(end.pos, contact),
+                                None,
+                                "{mouth_key} {mouth} fall {fall_depth} from {start:?} across {across}: rests at {:?}",
+                                end.pos
+                            );
+                        }
+                        shots += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(shots, 5 * 4 * 3 * 5 * 4);
+}
+
+#[test]
+fn a_spinning_ball_pressing_a_chain_into_a_cushion_finishes() {
+    // Found (an independent generator, stop 42): a cue ball at rest with a spin at the largest
+    // a scene allows (R|w| = 99.9 m/s), frozen behind two reds frozen to the cushion, presses
+    // them into it for as long as it slides (about 14 s): every pair of the chain in a train of
+    // micro-collisions. 214,520 events; the cap was 100,000 and stopped it as a runaway
+    // (exit 1 on a valid scene). It now ends at rest, the reds still against the cushion.
+    let (_, shot) = run(r#"
+        [[balls]]
+        id = "red0"
+        pos = [1.0, 0.0240126966415686]
+        [[balls]]
+        id = "red1"
+        pos = [1.0, 0.0764126966415686]
+        [[balls]]
+        id = "cue"
+        pos = [1.0, 0.1288126966415686]
+        spin = [3812.977099236641, 0.0, 0.0]
+    "#);
+    assert!(shot.stats.events > 100_000, "{}", shot.stats.events);
+    let end = shot.final_states();
+    for (b, s) in end.iter().enumerate() {
+        assert_eq!(s.motion, Motion::Stationary, "ball {b}");
+    }
+    // The cushion's nose is at y = 0: the chain stays pressed against it, touching.
+    assert!(
+        end[0].pos.y < 0.0241 && end[0].pos.y > 0.0239,
+        "{:?}",
+        end[0].pos
+    );
+}

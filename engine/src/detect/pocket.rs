@@ -14,9 +14,17 @@
 //!
 //! Its other ways out of a pocket's opening are the cushion's: the jaws' and facings' edges
 //! ([`super::cushion`]).
+//!
+//! The pocket's back: past the fall's diameter across the pocket's axis there is no bed (the
+//! hole, then the pocket's back). A ball whose centre reaches that line beside the fall, which
+//! only a pocket widened or deepened beyond a real one's allows (a `[table]` with a wide mouth
+//! and a deep fall: its facings no longer close on the fall), strikes the back and drops in
+//! ([`back_time`]), or, in the air with its lowest point above the nose, clears it and leaves
+//! the table. Before, such a ball rolled on past the facings' ends, on a cloth that is not
+//! there, and came to rest metres outside the table.
 
 use super::cushion::NoseEdge;
-use super::roots::{entries, exits, first_entry};
+use super::roots::{entries, exits, first_entry, line_contacts};
 use crate::motion::Path;
 use crate::table::Pocket;
 use polycool::Quadratic;
@@ -68,6 +76,23 @@ pub fn far_edge_time(
     exits(&rel, pocket.radius, window)
         .find(|&t| rel.at(t).dot(&axis) >= 0.0)
         .map(|t| (t, edge.cleared_at(path.at(t).z)))
+}
+
+/// First time in [0, window] at which `path`'s centre crosses the line of `pocket`'s back
+/// (the fall's diameter across the pocket's axis), moving out, beside the fall and near the
+/// pocket (within its opening's reach and a mouth's width more: the facings, which reach past
+/// the back, confine a ball on the cloth to less): the pocket's back (module docs). A
+/// centre that reaches the line over the fall is the fall's ([`capture_time`],
+/// [`far_edge_time`]).
+pub fn back_time(path: &Path, pocket: &Pocket, window: f64) -> Option<f64> {
+    let reach = pocket.opening_reach() + pocket.mouth_width;
+    let plan = path.plan();
+    line_contacts(&plan, pocket.centre, -pocket.axis(), 0.0, window)
+        .find(|(_, at)| {
+            (at - pocket.centre).xy().norm() > pocket.radius
+                && (at - pocket.mouth).xy().norm() <= reach
+        })
+        .map(|(t, _)| t)
 }
 
 #[cfg(test)]

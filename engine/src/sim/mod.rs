@@ -249,13 +249,21 @@ impl Sim<'_> {
             // Over a pocket's opening: drops in, or clears the pocket's back
             // (detect/pocket.rs).
             for (k, pk) in table.pockets.iter().enumerate() {
-                if !reach.near_point(pk.centre, pk.radius) {
+                if !reach.near_point(pk.mouth, pk.opening_reach()) {
                     continue;
                 }
-                if let Some(t) = detect::pocket::drop_time_in_air(&path, pk, edge, window) {
+                let over_fall = reach.near_point(pk.centre, pk.radius);
+                if over_fall
+                    && let Some(t) = detect::pocket::drop_time_in_air(&path, pk, edge, window)
+                {
                     found.push((t, Candidate::Pocket { pocket: k }));
                 }
-                if let Some((t, clears)) = detect::pocket::far_edge_time(&path, pk, edge, window) {
+                let far_edge = over_fall
+                    .then(|| detect::pocket::far_edge_time(&path, pk, edge, window))
+                    .flatten();
+                let back = detect::pocket::back_time(&path, pk, window)
+                    .map(|t| (t, edge.cleared_at(path.at(t).z)));
+                for (t, clears) in far_edge.into_iter().chain(back) {
                     let kind = if clears {
                         Candidate::OverPocket { pocket: k }
                     } else {
@@ -283,6 +291,12 @@ impl Sim<'_> {
             for (k, pk) in table.pockets.iter().enumerate() {
                 if reach.near_point(pk.centre, pk.radius)
                     && let Some(t) = detect::pocket::capture_time(&path, pk, window)
+                {
+                    found.push((t, Candidate::Pocket { pocket: k }));
+                }
+                // Beside a deep pocket's fall, its back (detect/pocket.rs).
+                if reach.near_point(pk.mouth, pk.opening_reach())
+                    && let Some(t) = detect::pocket::back_time(&path, pk, window)
                 {
                     found.push((t, Candidate::Pocket { pocket: k }));
                 }

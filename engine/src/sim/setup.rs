@@ -35,7 +35,11 @@ pub struct SimOptions {
 impl Default for SimOptions {
     fn default() -> Self {
         SimOptions {
-            max_events: 100_000,
+            // Above a physical micro-collision train's count: a struck ball slides at most
+            // about 14 s (R|w| <= 100 m/s, thesis cloth), at most 2,060 micro-collisions per
+            // pair per second (physics.md); a pressed chain of a dozen pairs makes some
+            // 350,000. 100,000 stopped such valid shots as runaways (stop 42).
+            max_events: 1_000_000,
             max_events_at_instant: 10_000,
             max_time: 3600.0,
             horizon: None,

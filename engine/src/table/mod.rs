@@ -281,7 +281,9 @@ impl Table {
     /// every nose and facing along its length (where a shot can leave a ball: WPBSA Section 3
     /// Rule 9, a ball on the edge of a pocket). The jaws and falls are checked apart.
     ///
-    /// "Short of the fall" is [`Pocket::short_of_back`]: a centre past the fall's diameter
+    /// "Between the jaws" is within [`Pocket::opening_reach`] of the mouth's middle, as
+    /// [`Table::holds`] has it (a deep fall's shelf included: the engine can leave a ball at
+    /// rest there, so a scene can place one). "Short of the fall" is [`Pocket::short_of_back`]: a centre past the fall's diameter
     /// across the pocket's axis is behind the hole, over the pocket's back, where no ball can
     /// rest (one on the cloth that gets there has crossed the fall and dropped; one in the air
     /// has left the table, `detect::pocket`), so it is refused like any centre off the cloth.
@@ -290,7 +292,7 @@ impl Table {
         let near = self
             .pockets
             .iter()
-            .any(|p| (pos - p.mouth).norm() <= p.mouth_width && p.short_of_back(pos, 0.0));
+            .any(|p| (pos - p.mouth).norm() <= p.opening_reach() && p.short_of_back(pos, 0.0));
         near && self.cushions.iter().all(|c| {
             let s = (pos - c.start).dot(&c.direction());
             let along = s >= 0.0 && s <= c.length();
@@ -313,8 +315,7 @@ impl Table {
         let plan = Vec3::new(pos.x, pos.y, 0.0);
         inside
             || self.pockets.iter().any(|p| {
-                let deep = (p.centre - p.mouth).norm() - p.radius;
-                let opening = (plan - p.mouth).norm() <= p.mouth_width + deep.max(0.0) + tol;
+                let opening = (plan - p.mouth).norm() <= p.opening_reach() + tol;
                 // Over the fall (a ball in the air), or in front of its far half.
                 opening
                     && ((plan - p.centre).norm() <= p.radius + tol || p.short_of_back(plan, tol))
@@ -323,6 +324,13 @@ impl Table {
 }
 
 impl Pocket {
+    /// How far from the mouth's middle (plan) a ball's centre can be and still be in the
+    /// pocket's opening: the mouth's width and the fall's depth behind it.
+    pub fn opening_reach(&self) -> f64 {
+        let deep = (self.centre - self.mouth).norm() - self.radius;
+        self.mouth_width + deep.max(0.0)
+    }
+
     /// The unit vector along the pocket's axis, from the mouth into the pocket (plan).
     pub fn axis(&self) -> Vec3 {
         (self.centre - self.mouth)

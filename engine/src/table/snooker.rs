@@ -40,7 +40,9 @@ pub struct SnookerDims {
     pub corner_facing_angle: f64,
     /// Same for a middle pocket. Assumption: 78 deg (entry angle 102 deg).
     pub middle_facing_angle: f64,
-    /// Length of each facing, m (long enough to reach past the fall).
+    /// Length of each facing, m: at least this, and lengthened where a wide mouth or a deep
+    /// fall needs it to reach [`FACING_PAST_BACK`] past the fall's back (its diameter across
+    /// the pocket's axis), so that the facings close the opening up to the pocket's back.
     pub facing_length: f64,
     /// How far behind the line joining the jaw points the fall circle begins, m.
     /// Assumption: 0 (a ball drops once its centre is past the mouth and inside the fall).
@@ -112,16 +114,34 @@ fn v(x: f64, y: f64) -> Vec3 {
     Vec3::new(x, y, 0.0)
 }
 
+/// How far past the fall's back (along the pocket's axis) the facings reach at least, m: more
+/// than any ball's radius the scenes allow (40 mm), so that a ball beside the fall meets the
+/// pocket's back (`detect::pocket::back_time`) before it can pass a facing's end. Before, a
+/// pocket with a wide mouth and a deep fall left a gap there, and a ball rolled out through it
+/// onto cloth that is not there.
+pub const FACING_PAST_BACK: f64 = 0.05;
+
 /// Builds a pocket from its two jaw ends: jaw arcs tangent to the noses, facings tangent to
 /// the arcs turned by `facing_angle`, and the fall circle behind the mouth.
 fn pocket(name: &str, ends: [JawEnd; 2], facing_angle: f64, dims: &SnookerDims, table: &mut Table) {
     let r = dims.jaw_radius;
+    let mouth = 0.5 * (ends[0].point + ends[1].point);
+    let mouth_width = (ends[0].point - ends[1].point).norm();
+    let axis = -(ends[0].normal + ends[1].normal).normalize();
+    // The depth behind the mouth the facings must reach: the fall's back and the margin.
+    let back = dims.fall_depth + 0.5 * mouth_width + FACING_PAST_BACK;
     for end in &ends {
         let centre = end.point - r * end.normal;
         let facing_dir = facing_angle.cos() * end.toward_pocket - facing_angle.sin() * end.normal;
         let facing_normal =
             facing_angle.sin() * end.toward_pocket + facing_angle.cos() * end.normal;
         let start = centre + r * facing_normal;
+        let along = facing_dir.dot(&axis);
+        let needed = if along > 0.0 {
+            (back - (start - mouth).dot(&axis)) / along
+        } else {
+            0.0
+        };
         table.jaws.push(Jaw {
             name: format!("{name}/{} jaw", end.cushion),
             centre,
@@ -130,13 +150,10 @@ fn pocket(name: &str, ends: [JawEnd; 2], facing_angle: f64, dims: &SnookerDims, 
         table.cushions.push(Cushion {
             name: format!("{name}/{} facing", end.cushion),
             start,
-            end: start + dims.facing_length * facing_dir,
+            end: start + dims.facing_length.max(needed) * facing_dir,
             normal: facing_normal,
         });
     }
-    let mouth = 0.5 * (ends[0].point + ends[1].point);
-    let mouth_width = (ends[0].point - ends[1].point).norm();
-    let axis = -(ends[0].normal + ends[1].normal).normalize();
     let radius = 0.5 * mouth_width;
     table.pockets.push(Pocket {
         name: name.to_string(),
