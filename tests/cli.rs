@@ -189,6 +189,20 @@ fn bad_scenes_are_rejected_with_file_key_and_reason() {
         "unknown layout",
     );
     rejects("dup", &format!("{BALL}{BALL}"), "balls[1].id", "used twice");
+    // A table written as an array: serde's derive read it by position (this strike was played
+    // at 2 m/s, aim 0.1), so a reordering of the struct's fields changed what it meant.
+    rejects(
+        "cue-array",
+        &format!("cue = [\"cue\", 2.0, 0.1]\n{BALL}"),
+        "cue",
+        "invalid type: sequence, expected struct",
+    );
+    rejects(
+        "ball-array",
+        "balls = [[\"cue\", [0.5, 0.5]]]\n",
+        "balls[0]",
+        "invalid type: sequence, expected struct",
+    );
     // A huge value is read back short: `{}` wrote 1e300 as 301 digits.
     for (tag, scene, key, shown) in [
         (
@@ -321,5 +335,30 @@ fn the_result_says_why_the_shot_ended() {
             .collect();
         let at = |k: &str| keys.iter().position(|x| *x == k).unwrap();
         assert_eq!(at("ending"), at("duration") + 1, "{keys:?}");
+    }
+}
+
+#[test]
+fn the_readmes_simulate_tour_shows_what_the_command_prints() {
+    // The tour's lines are the command's own, in order (the last shown one ends in "..."
+    // where the README cuts it short): a wording changed in the summary changes the README.
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let start = "$ snooker simulate scenes/break-off.toml --json out/break-off.json\n";
+    let block = &readme[readme.find(start).expect("the tour's simulate block") + start.len()..];
+    let shown: Vec<&str> = block
+        .lines()
+        .take_while(|l| !l.starts_with("```"))
+        .collect();
+    assert!(shown.len() >= 3, "{shown:?}");
+    let o = snooker(&["simulate", "scenes/break-off.toml"]);
+    assert!(o.status.success());
+    let printed = String::from_utf8(o.stdout).unwrap();
+    let printed: Vec<&str> = printed.lines().collect();
+    for (k, line) in shown.iter().enumerate() {
+        match line.strip_suffix("...") {
+            Some(head) => assert!(printed[k].starts_with(head), "{line}\n{}", printed[k]),
+            None => assert_eq!(*line, printed[k]),
+        }
     }
 }

@@ -7,7 +7,7 @@ use crate::SceneError;
 /// Deserializes JSON `text` into `T`, with errors naming `file`, the key, line and column.
 pub fn from_json<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, SceneError> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let value = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+    let value = serde_path_to_error::deserialize(crate::tables::Tables(&mut de)).map_err(|e| {
         let key = e.path().to_string();
         let inner = e.into_inner();
         let reason = if inner.is_syntax() || inner.is_eof() {

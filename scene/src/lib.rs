@@ -23,6 +23,7 @@ pub mod model;
 pub mod params;
 pub mod read;
 pub mod result;
+pub mod tables;
 pub mod toml_input;
 pub mod value_input;
 pub mod write;

@@ -21,7 +21,7 @@ pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Resu
         };
         SceneError::new(file, "", reason)
     })?;
-    serde_path_to_error::deserialize(de).map_err(|e| {
+    serde_path_to_error::deserialize(crate::tables::Tables(de)).map_err(|e| {
         let key = e.path().to_string();
         let inner = e.into_inner();
         let mut reason = inner.message().trim().to_string();

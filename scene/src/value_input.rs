@@ -12,7 +12,7 @@ where
     D: Deserializer<'de>,
     T: Deserialize<'de>,
 {
-    serde_path_to_error::deserialize(d).map_err(|e| {
+    serde_path_to_error::deserialize(crate::tables::Tables(d)).map_err(|e| {
         let key = e.path().to_string();
         // "." is the whole value, "?" a place not reached.
         let key = if key == "." || key == "?" { "" } else { &key };

@@ -44,7 +44,8 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for Body<T> {
             let status = e.status().as_u16();
             ApiError::new(status, REQUEST, "", e.body_text())
         })?;
-        // A request is an object of named keys: an array would be read by position.
+        // A request is an object of named keys: an array would be read by position (nested
+        // objects are refused as arrays by `Tables`; the top level gets its own message).
         let first = bytes.iter().find(|b| !b.is_ascii_whitespace());
         if first.is_some_and(|&b| b != b'{') {
             return Err(ApiError::bad(
@@ -54,11 +55,12 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for Body<T> {
             ));
         }
         let mut de = serde_json::Deserializer::from_slice(&bytes);
-        let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
-            let path = e.path().to_string();
-            let reason = e.into_inner().to_string();
-            ApiError::bad(REQUEST, &key_of(&path, &reason), reason)
-        })?;
+        let value: T = serde_path_to_error::deserialize(snooker_scene::tables::Tables(&mut de))
+            .map_err(|e| {
+                let path = e.path().to_string();
+                let reason = e.into_inner().to_string();
+                ApiError::bad(REQUEST, &key_of(&path, &reason), reason)
+            })?;
         de.end()
             .map_err(|e| ApiError::bad(REQUEST, "", format!("not valid JSON: {e}")))?;
         Ok(Body(value))
