@@ -28,6 +28,38 @@ pub enum OutputError {
     /// A file lies where a directory on the way should be.
     #[error("{} is not a directory", .0.display())]
     NotADirectory(std::path::PathBuf),
+    /// The path, or a link it leads through, is under `/dev` or `/proc` (`/dev/stdout`,
+    /// `/proc/self/fd/1`): an output replaces its file whole, and renaming a file onto a
+    /// system path (as root, `/dev/stdout` itself) is never what was meant.
+    #[error(
+        "is not a regular file: it leads to {}, under /dev or /proc (a device or a process's descriptor), which an output written whole and renamed into place must not replace; name a file, or `-` where the option takes it for standard output",
+        .0.display()
+    )]
+    SystemPath(std::path::PathBuf),
+}
+
+/// The paths an output path leads to through the links of its last component: the path
+/// itself first, the file finally written last (a link is written through and stays a link).
+/// At most 40 links are followed, as the kernel allows.
+pub fn link_chain(path: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let mut chain = vec![path.to_path_buf()];
+    for _ in 0..40 {
+        let last = chain.last().expect("the chain starts with the path");
+        let Ok(target) = std::fs::read_link(last) else {
+            break;
+        };
+        let next = match last.parent() {
+            Some(dir) if target.is_relative() => dir.join(target),
+            _ => target,
+        };
+        chain.push(next);
+    }
+    chain
+}
+
+/// True for a path under `/dev` or `/proc` (made absolute first).
+fn is_system_path(path: &std::path::Path) -> bool {
+    std::path::absolute(path).is_ok_and(|p| p.starts_with("/dev") || p.starts_with("/proc"))
 }
 
 /// Checks, before any work, that `path` can become an output file: it is not `-` (a caller
@@ -37,6 +69,9 @@ pub enum OutputError {
 pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     if path.as_os_str() == "-" {
         return Err(OutputError::Dash);
+    }
+    if let Some(system) = link_chain(path).into_iter().find(|p| is_system_path(p)) {
+        return Err(OutputError::SystemPath(system));
     }
     if path.is_dir() {
         return Err(OutputError::Directory);
@@ -122,6 +157,39 @@ pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
     file.commit()
 }
 
+/// Several outputs put in place together: each is written whole to its temporary file (and
+/// flushed to disk) first, then all are renamed, so that one that cannot be written (its
+/// directory replaced by a file during the run, a full disk) leaves none of the others
+/// behind. Before, a command's outputs were written one after another, and a failing `--json`
+/// left the `--log` written before it on disk under an exit of 2.
+#[derive(Default)]
+pub struct Outputs {
+    files: Vec<(String, AtomicFile)>,
+}
+
+impl Outputs {
+    /// Writes `bytes` for `path` (the output of `flag`) to its temporary file.
+    pub fn add(&mut self, flag: &str, path: &std::path::Path, bytes: &[u8]) -> Result<(), String> {
+        let label = format!("{flag} {}", path.display());
+        let staged = AtomicFile::create(path).and_then(|mut f| {
+            f.write(bytes)?;
+            f.flush()?;
+            Ok(f)
+        });
+        let file = staged.map_err(|e| format!("{label}: {e:#}"))?;
+        self.files.push((label, file));
+        Ok(())
+    }
+
+    /// Puts every file in place, in the order added.
+    pub fn commit(self) -> Result<(), String> {
+        for (label, file) in self.files {
+            file.commit().map_err(|e| format!("{label}: {e:#}"))?;
+        }
+        Ok(())
+    }
+}
+
 /// A file written piece by piece and put in place whole: the pieces go to a temporary file
 /// beside `path`, renamed onto it by [`AtomicFile::commit`]; dropped before that, the
 /// temporary file is removed and nothing is left half-written.
@@ -132,9 +200,12 @@ pub struct AtomicFile {
 }
 
 impl AtomicFile {
-    /// Starts writing `path` (missing directories on the way are created).
+    /// Starts writing `path` (missing directories on the way are created). A link is written
+    /// through: the temporary file goes beside the file it leads to and is renamed onto that
+    /// file, so the link stays a link ([`link_chain`]).
     pub fn create(path: &std::path::Path) -> anyhow::Result<AtomicFile> {
         use anyhow::Context;
+        let path = &link_chain(path).pop().expect("the chain holds the path");
         let dir = path
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
@@ -159,6 +230,17 @@ impl AtomicFile {
         use std::io::Write;
         let out = self.out.as_mut().context("the file is closed")?;
         out.write_all(bytes)
+            .with_context(|| format!("cannot write {}", self.tmp.display()))
+    }
+
+    /// Writes what is buffered to the temporary file and to the disk (errors a full disk gives
+    /// appear here, before anything is put in place).
+    pub fn flush(&mut self) -> anyhow::Result<()> {
+        use anyhow::Context;
+        use std::io::Write;
+        let out = self.out.as_mut().context("the file is closed")?;
+        out.flush()
+            .and_then(|()| out.get_ref().sync_all())
             .with_context(|| format!("cannot write {}", self.tmp.display()))
     }
 
@@ -211,6 +293,81 @@ mod tests {
             .map(|e| e.unwrap().file_name())
             .collect();
         assert_eq!(left, ["out.json"]);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// Outputs staged together: one that cannot be written leaves none of the others (before,
+    /// a command's `--log` was in place when its `--json` failed, under an exit of 2).
+    #[test]
+    fn staged_outputs_are_put_in_place_all_or_none() {
+        let dir = std::env::temp_dir().join(format!("snooker-staged-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("d"), "a file where a directory is needed").unwrap();
+        let mut files = Outputs::default();
+        files.add("--log", &dir.join("log.jsonl"), b"{}\n").unwrap();
+        let e = files
+            .add("--json", &dir.join("d/sum.json"), b"{}")
+            .unwrap_err();
+        assert!(e.starts_with("--json "), "{e}");
+        drop(files);
+        let mut left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        left.sort();
+        assert_eq!(left, ["d"]);
+        let mut files = Outputs::default();
+        files.add("--log", &dir.join("log.jsonl"), b"{}\n").unwrap();
+        files.add("--json", &dir.join("e/sum.json"), b"{}").unwrap();
+        files.commit().unwrap();
+        assert_eq!(std::fs::read(dir.join("e/sum.json")).unwrap(), b"{}");
+        assert_eq!(std::fs::read(dir.join("log.jsonl")).unwrap(), b"{}\n");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// An output through a link writes the file it leads to: before, the temporary file was
+    /// renamed onto the link itself, which became a file and left its target as it was (as
+    /// root, `--log /dev/stdout` replaced the machine's `/dev/stdout`).
+    #[cfg(unix)]
+    #[test]
+    fn a_link_is_written_through_and_a_system_path_refused() {
+        let dir = std::env::temp_dir().join(format!("snooker-link-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("sub")).unwrap();
+        std::fs::write(dir.join("sub/real.json"), "old").unwrap();
+        let link = dir.join("link.json");
+        std::os::unix::fs::symlink("sub/real.json", &link).unwrap();
+        let hop = dir.join("hop.json");
+        std::os::unix::fs::symlink("link.json", &hop).unwrap();
+        check_output(&hop).unwrap();
+        write_atomic(&hop, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&hop).unwrap().is_symlink());
+        assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
+        assert_eq!(
+            std::fs::read_to_string(dir.join("sub/real.json")).unwrap(),
+            "new"
+        );
+        let left: Vec<_> = std::fs::read_dir(dir.join("sub"))
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(left, ["real.json"]);
+        // A link to standard output, and the system's own paths, are refused before any work.
+        let out = dir.join("out.jsonl");
+        std::os::unix::fs::symlink("/dev/stdout", &out).unwrap();
+        for p in [
+            out.as_path(),
+            "/dev/stdout".as_ref(),
+            "/proc/self/fd/1".as_ref(),
+        ] {
+            let e = check_output(p).unwrap_err();
+            assert!(
+                matches!(e, OutputError::SystemPath(_)),
+                "{}: {e}",
+                p.display()
+            );
+        }
         std::fs::remove_dir_all(&dir).ok();
     }
 }

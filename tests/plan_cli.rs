@@ -205,6 +205,41 @@ fn a_blocked_pot_is_planned_as_another_kind_and_replays() {
 }
 
 #[test]
+fn a_plant_strikes_first_only_a_ball_plant_balls_names() {
+    // b1 touches the red on its line to the top-left pocket: a set, planted through b1.
+    let dir = temp_dir("plan-plant-balls");
+    let scene = dir.join("s.toml");
+    std::fs::write(
+        &scene,
+        "balls = [{id = \"cue\", pos = [1.0, 0.9]}, {id = \"red\", pos = [2.5, 1.2]}, \
+         {id = \"b1\", pos = [2.4538, 1.175]}, {id = \"b2\", pos = [2.0, 0.5]}]\n",
+    )
+    .unwrap();
+    let plan = dir.join("plan.json");
+    let run = |via: &str| {
+        let extra = [
+            "--tolerance",
+            "0.01",
+            "--alternatives",
+            "0",
+            "--kinds",
+            "plant",
+        ];
+        let (plan, via) = (plan.to_str().unwrap(), ["--plant-balls", via]);
+        plan_red_top_left(&scene, &[&extra[..], &via, &["--json", plan]].concat())
+    };
+    let o = run("b1");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(json(&plan)["best"]["route"]["via"][0], "b1");
+    std::fs::remove_file(&plan).unwrap();
+    // Only b2 allowed: no plant is open through it.
+    let o = run("b2");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no plant is open"));
+    assert!(!plan.exists());
+}
+
+#[test]
 fn bad_requests_exit_2_with_one_message_and_write_nothing() {
     let dir = temp_dir("plan-bad");
     let out = dir.join("plan.json");
@@ -265,6 +300,26 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
         (
             format!("{ok} --cue-to 1,1 --samples 1000000000"),
             "--samples",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --plant-balls pink"),
+            "--plant-balls",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --plant-balls cue"),
+            "--plant-balls",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --plant-balls red"),
+            "--plant-balls",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --plant-balls blue,,"),
+            "--plant-balls",
+        ),
+        (
+            format!("{ok} --cue-to 1,1 --plant-balls blue,blue"),
+            "--plant-balls",
         ),
     ] {
         let extra: Vec<&str> = extra.split_whitespace().collect();

@@ -496,7 +496,18 @@ impl Problem {
             Some(ids) => {
                 let mut ok = vec![false; setup.balls.len()];
                 for id in ids {
-                    ok[index(RequestField::PlantBalls, id)?] = true;
+                    let b = index(RequestField::PlantBalls, id)?;
+                    // A plant strikes another ball first: the cue ball and the ball potted
+                    // cannot be that ball (naming one would be a typo, not a plant).
+                    if b == cue || b == object {
+                        return Err(bad(
+                            RequestField::PlantBalls,
+                            format!(
+                                "\"{id}\" is the ball struck or the ball potted, not a ball to plant through"
+                            ),
+                        ));
+                    }
+                    ok[b] = true;
                 }
                 ok
             }

@@ -109,8 +109,11 @@ fn check_plot(path: &Path) -> Result<(), String> {
 }
 
 /// Draws the plot into a temporary PNG beside `path` (missing directories created) and puts it
-/// in place: nothing is left half-drawn.
+/// in place: nothing is left half-drawn. A link is drawn through, as every output is.
 fn draw(samples: &[Sample], axes: plot::SlipAxes, path: &Path) -> anyhow::Result<()> {
+    let path = &output::link_chain(path)
+        .pop()
+        .expect("the chain holds the path");
     let dir = path
         .parent()
         .filter(|d| !d.as_os_str().is_empty())

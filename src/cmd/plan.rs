@@ -60,6 +60,10 @@ pub struct Args {
     /// those do not reach the target.
     #[arg(long, value_name = "KINDS", default_value = "direct,double,plant,kiss")]
     pub kinds: String,
+    /// The balls a plant may strike first, comma-separated ids (e.g. "red1,red2": by the
+    /// rules a plant's first ball must be a ball on); every other ball when not given.
+    #[arg(long, value_name = "IDS")]
+    pub plant_balls: Option<String>,
     /// Write the plan as JSON to this file, or to standard output with `-`.
     #[arg(long, value_name = "OUT")]
     pub json: Option<String>,
@@ -113,8 +117,7 @@ fn flag(field: RequestField) -> String {
         RequestField::Bounds(v) => format!("--bounds {}", v.name()),
         RequestField::Noise(c) => format!("--noise {}", c.name()),
         RequestField::Kinds => "--kinds".into(),
-        // Not a flag: the command lets a plant strike any ball first.
-        RequestField::PlantBalls => "plant balls".into(),
+        RequestField::PlantBalls => "--plant-balls".into(),
     }
 }
 
@@ -174,6 +177,21 @@ fn parse_kinds(spec: &str) -> Result<Vec<ShotKind>, String> {
     Ok(kinds)
 }
 
+/// The ball ids named in `spec` ("red1,red2"), each once; the planner checks that they exist.
+fn parse_plant_balls(spec: &str) -> Result<Vec<String>, String> {
+    let mut ids: Vec<String> = Vec::new();
+    for id in spec.split(',').map(str::trim) {
+        if id.is_empty() {
+            return Err(format!("--plant-balls {spec}: an empty ball id"));
+        }
+        if ids.iter().any(|i| i == id) {
+            return Err(format!("--plant-balls {spec}: `{id}` named twice"));
+        }
+        ids.push(id.to_string());
+    }
+    Ok(ids)
+}
+
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
     let file = args.scene.display().to_string();
@@ -209,6 +227,11 @@ pub fn run(args: Args) -> ExitCode {
         Ok(k) => k,
         Err(e) => return bad_input(e),
     };
+    let plant_balls = match args.plant_balls.as_deref().map(parse_plant_balls) {
+        None => None,
+        Some(Ok(ids)) => Some(ids),
+        Some(Err(e)) => return bad_input(e),
+    };
     let json = args.json.as_deref();
     let outputs = [
         ("--json", json.filter(|o| *o != "-").map(PathBuf::from)),
@@ -227,6 +250,7 @@ pub fn run(args: Args) -> ExitCode {
         alternatives: args.alternatives,
         seed: args.seed,
         kinds,
+        plant_balls,
         ..Request::new(&args.pot, &args.pocket, target, &p)
     };
     let problem = match Problem::new(&scene, request) {
@@ -262,23 +286,25 @@ pub fn run(args: Args) -> ExitCode {
             Err(e) => return failed(format!("--record {}: {e:#}", out.display())),
         },
     };
-    if let Some(out) = json {
-        let text = serde_json::to_string_pretty(&plan).expect("JSON of finite numbers");
-        if out == "-" {
-            outln!("{text}");
-        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
-            return bad_input(format!("--json {out}: {e:#}"));
-        }
+    let text = json.map(|_| serde_json::to_string_pretty(&plan).expect("JSON of finite numbers"));
+    // Every file staged whole before any is put in place (output::Outputs).
+    let mut files = output::Outputs::default();
+    let mut staged = Ok(());
+    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &text) {
+        staged = staged
+            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
     }
-    if let Some(out) = &args.scene_out
-        && let Err(e) = output::write_atomic(out, out_text.as_bytes())
-    {
-        return bad_input(format!("--scene-out {}: {e:#}", out.display()));
+    if let Some(out) = &args.scene_out {
+        staged = staged.and_then(|()| files.add("--scene-out", out, out_text.as_bytes()));
     }
-    if let Some((out, bytes)) = recording
-        && let Err(e) = output::write_atomic(out, &bytes)
-    {
-        return bad_input(format!("--record {}: {e:#}", out.display()));
+    if let Some((out, bytes)) = &recording {
+        staged = staged.and_then(|()| files.add("--record", out, bytes));
+    }
+    if let Err(e) = staged.and_then(|()| files.commit()) {
+        return bad_input(e);
+    }
+    if let (Some("-"), Some(text)) = (json, text) {
+        outln!("{text}");
     }
     ExitCode::SUCCESS
 }

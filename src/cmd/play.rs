@@ -45,7 +45,8 @@ pub struct Args {
     /// likeliest pot, no position, no safety).
     #[arg(long, value_name = "AGENT", default_value = "player")]
     pub opponent: String,
-    /// Threads to simulate on, 1 to 1024 (default: every core); the log does not depend on it.
+    /// Threads to simulate on, 1 to 1024 (default: every core); the log does not depend on it
+    /// (but for each line's decision_time, the wall clock).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
     /// Write the play log (formats.md, "Play log"): one JSON line per stroke.
@@ -384,25 +385,27 @@ pub fn run(args: Args) -> ExitCode {
             Err(e) => return failed(format!("--record {}: {e}", out.display())),
         },
     };
-    if let (Some(out), Some(text)) = (&args.log, log)
-        && let Err(e) = output::write_atomic(out, text.as_bytes())
-    {
-        return bad_input(format!("--log {}: {e:#}", out.display()));
+    // Every file staged whole before any is put in place (output::Outputs).
+    let mut files = output::Outputs::default();
+    let mut staged = Ok(());
+    if let (Some(out), Some(text)) = (&args.log, &log) {
+        staged = staged.and_then(|()| files.add("--log", out, text.as_bytes()));
     }
-    if let (Some(out), Some(text)) = (json, doc) {
-        if out == "-" {
-            let mut stdout = std::io::stdout().lock();
-            if writeln!(stdout, "{text}").is_err() {
-                return ExitCode::from(super::FAILED);
-            }
-        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
-            return bad_input(format!("--json {out}: {e:#}"));
+    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &doc) {
+        staged = staged
+            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
+    }
+    if let Some((out, bytes)) = &rrd {
+        staged = staged.and_then(|()| files.add("--record", out, bytes));
+    }
+    if let Err(e) = staged.and_then(|()| files.commit()) {
+        return bad_input(e);
+    }
+    if let (Some("-"), Some(text)) = (json, doc) {
+        let mut stdout = std::io::stdout().lock();
+        if writeln!(stdout, "{text}").is_err() {
+            return ExitCode::from(super::FAILED);
         }
-    }
-    if let Some((out, bytes)) = rrd
-        && let Err(e) = output::write_atomic(out, &bytes)
-    {
-        return bad_input(format!("--record {}: {e:#}", out.display()));
     }
     ExitCode::SUCCESS
 }

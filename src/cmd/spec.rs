@@ -63,6 +63,20 @@ pub fn noise(
              speed=F*V) and offset is side=M,height=M"
         ));
     }
+    // A name given twice kept the last value silently (`aim=0.1,aim=0.2`): a typo, refused.
+    let expanded: Vec<&str> = names
+        .iter()
+        .flat_map(|&n| match n {
+            "offset" => vec!["side", "height"],
+            n => vec![n],
+        })
+        .collect();
+    if let Some(twice) = (0..expanded.len()).find(|&k| expanded[..k].contains(&expanded[k])) {
+        return Err(format!(
+            "{flag} {spec}: `{}` is given twice",
+            expanded[twice]
+        ));
+    }
     for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
         if part == "standard" {
             noise = Noise::STANDARD;
@@ -136,5 +150,10 @@ mod tests {
         }
         let e = noise("--noise", "aim=0.002,speed=0.02,offset=0.001", s).unwrap_err();
         assert!(e.contains("m/s"), "{e}");
+        // A name twice (offset is side and height) was played with its last value.
+        for twice in ["aim=0.1,aim=0.2", "0,side=0.001,offset=0.002"] {
+            let e = noise("--noise", twice, s).unwrap_err();
+            assert!(e.contains("given twice"), "{e}");
+        }
     }
 }
