@@ -437,3 +437,66 @@ fn check_strokes_in_recording(bytes: &[u8], log: &[Value]) {
         );
     }
 }
+
+/// Balls over the D covering every point of the player's 5 cm grid, a clear place left
+/// between them: both agents play from it. Before, this valid frame exited 1 with "no strike
+/// can be played from this frame".
+#[test]
+fn a_d_whose_grid_is_covered_still_gives_the_cue_ball_in_hand_a_place() {
+    let dir = temp_dir("play-d-covered");
+    let mut balls = String::new();
+    let mut ball = |id: &str, x: f64, y: f64| {
+        balls += &format!("[[balls]]\nid = \"{id}\"\npos = [{x}, {y}]\n");
+    };
+    ball("black", 3.245, 0.889);
+    ball("pink", 2.67675, 0.889);
+    ball("blue", 1.7845, 0.889);
+    // A lattice over the D, 5 cm steps along x, 25 cm across, shifted every row.
+    let mut red = 0;
+    for (row, x) in [0.787, 0.737, 0.687, 0.637, 0.587, 0.537]
+        .into_iter()
+        .enumerate()
+    {
+        let ys: &[f64] = match row % 5 {
+            0 => &[0.789, 1.039],
+            1 => &[0.639, 0.889, 1.139],
+            2 => &[0.739, 0.989],
+            3 => &[0.589, 0.839, 1.089],
+            _ => &[0.689, 0.939, 1.189],
+        };
+        for &y in ys {
+            red += 1;
+            ball(&format!("red{red}"), x, y);
+        }
+    }
+    ball("yellow", 0.487, 0.889);
+    ball("green", 0.437, 0.739);
+    ball("brown", 0.437, 0.989);
+    // Player 1, the opponent named, plays first in the second frame.
+    for (to_play, opponent) in [(0, "player"), (1, "greedy")] {
+        let frame = dir.join(format!("{opponent}.toml"));
+        let head = format!("[frame]\non = \"red\"\nball_in_hand = true\nto_play = {to_play}\n");
+        std::fs::write(&frame, head + &balls).unwrap();
+        let log = dir.join(format!("{opponent}.jsonl"));
+        let o = snooker(&[
+            "play",
+            frame.to_str().unwrap(),
+            "--frame",
+            "--opponent",
+            opponent,
+            "--max-strokes",
+            "1",
+            "--effort",
+            "50",
+            "--quiet",
+            "--log",
+            log.to_str().unwrap(),
+        ]);
+        assert!(
+            o.status.success(),
+            "{opponent}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert_eq!(lines(&log).len(), 1, "{opponent}");
+    }
+}

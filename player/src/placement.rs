@@ -8,15 +8,12 @@ use snooker_rules::Frame;
 const PLACEMENTS: usize = 3;
 const PLACEMENT_GAP: f64 = 0.08;
 
-/// Places for the cue ball in hand: the best few of the D's grid by the value of the pots
+/// Places for the cue ball in hand: the best few of the D's grid (or its one clear place,
+/// [`crate::value::in_hand_points`]) by the value of the pots
 /// they leave, at least [`PLACEMENT_GAP`] apart.
 pub(crate) fn placements(frame: &Frame, valuer: &Valuer) -> Vec<[f64; 2]> {
-    let r = frame.params().ball_radius;
-    let others = crate::value::object_positions(frame);
-    let mut scored: Vec<(f64, [f64; 2])> = frame
-        .the_d()
-        .grid(crate::value::IN_HAND_STEP)
-        .filter(|p| others.iter().all(|o| (o - p).xy().norm() > 2.0 * r + 1e-6))
+    let mut scored: Vec<(f64, [f64; 2])> = crate::value::in_hand_points(frame)
+        .into_iter()
         .map(|p| (valuer.from(frame, p).0, [p.x, p.y]))
         .collect();
     // Best first; equal values keep the grid's order (its middle first).

@@ -130,13 +130,8 @@ impl Valuer {
     /// The best place in the D for the cue ball in hand (a grid [`IN_HAND_STEP`] apart, clear
     /// of every ball) and its value.
     pub fn best_in_hand(&self, frame: &Frame) -> (f64, Option<[f64; 2]>) {
-        let r = frame.params().ball_radius;
-        let others = object_positions(frame);
         let mut best = (0.0, None);
-        for p in frame.the_d().grid(IN_HAND_STEP) {
-            if others.iter().any(|o| (o - p).xy().norm() <= 2.0 * r + 1e-6) {
-                continue;
-            }
+        for p in in_hand_points(frame) {
             let v = self.from(frame, p).0;
             if best.1.is_none() || v > best.0 {
                 best = (v, Some([p.x, p.y]));
@@ -180,6 +175,28 @@ impl Valuer {
         }
         best
     }
+}
+
+/// The places tried for the cue ball in hand: the D's grid [`IN_HAND_STEP`] apart, clear of
+/// every ball; when balls cover every point of that grid, the clear place nearest the D's
+/// centre (`Frame::nearest_placement`, a finer search), so that a frame with any room in the
+/// D has a place (before, such a frame was "no strike can be played").
+pub fn in_hand_points(frame: &Frame) -> Vec<Vec3> {
+    let r = frame.params().ball_radius;
+    let others = object_positions(frame);
+    let grid: Vec<Vec3> = frame
+        .the_d()
+        .grid(IN_HAND_STEP)
+        .filter(|p| others.iter().all(|o| (o - p).xy().norm() > 2.0 * r + 1e-6))
+        .collect();
+    if !grid.is_empty() {
+        return grid;
+    }
+    let d = frame.the_d();
+    frame
+        .nearest_placement([d.centre.x, d.centre.y])
+        .map(|p| vec![Vec3::new(p[0], p[1], d.centre.z)])
+        .unwrap_or_default()
 }
 
 /// Where the balls of `frame` other than the cue ball are (a cue ball in hand is placed among
