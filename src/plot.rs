@@ -94,8 +94,10 @@ pub fn slips(samples: &[Sample], axes: SlipAxes, path: &Path) -> anyhow::Result<
     let colours = [RED, BLUE, GREEN];
     let labels = [
         "s: contact between the bodies",
-        "s': cloth under body 0",
-        "s': cloth under body 1",
+        // Body 0 is the incoming ball (the cue ball of a ball-ball impact, the ball of a
+        // cushion impact), body 1 the object ball (a cushion has no cloth under it).
+        "s': cloth under the incoming ball",
+        "s': cloth under the object ball",
     ];
     let data = [slip, cloth(0), cloth(1)];
     for (k, d) in data.iter().enumerate() {

@@ -209,8 +209,8 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
         return Err(err(
             "offset",
             format!(
-                "miscue: the tip meets the ball {:.1} mm from the cue's axis, beyond the limit \
-                 of {} R = {:.1} mm (thesis eq. 7.7)",
+                "miscue: the tip meets the ball {:.1} mm off centre (across the cue's line through \
+                 the centre), beyond the limit of {} R = {:.1} mm (thesis eq. 7.7)",
                 contact_offset * 1e3,
                 p.miscue_limit,
                 p.miscue_limit * r * 1e3

@@ -227,7 +227,8 @@ declare_params! {
         default squirt_endmass(BALL_MASS, BALL_RADIUS, 0.012, 2.5_f64.to_radians()),
         range ValidRange::closed(0.0, 0.1),
         source "fitted: 2.5 deg squirt at 12 mm side offset (thesis §2.4.1.3; Shepard 1997, Cross 2008)";
-    /// Largest contact offset from the cue axis, as a fraction of R, before a miscue
+    /// Largest distance of the contact from the line through the ball's centre along the cue
+    /// (not the offset cue's own axis), as a fraction of R, before a miscue
     /// (thesis §7.1.2 eq. 7.7, after Alciatore: R/2).
     miscue_limit: unit "1 (fraction of R)", default 0.5, range ValidRange::open(0.0, 1.0),
         source "thesis eq. 7.7 (Alciatore)";

@@ -22,7 +22,7 @@ it ends when the turn passes); truncated after ``max_strokes`` strokes. ``reds``
 ``start="open"``: the break-off racks 15); a step before the first ``reset``
 raises Gymnasium's ``ResetNeeded``.
 
-Try it: ``python examples/frame_env.py`` plays a frame of random strokes.
+Try it: ``python python/examples/frame_env.py`` (from the repository's root) plays a frame of random strokes.
 """
 
 from __future__ import annotations

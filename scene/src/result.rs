@@ -155,7 +155,8 @@ pub struct StrikeRecord {
     pub cue_speed: f64,
     /// Contact point relative to the ball's centre, m.
     pub contact: [f64; 3],
-    /// Distance of the contact from the cue's axis, m.
+    /// Distance of the contact from the line through the ball's centre along the cue, m (the
+    /// miscue limit's measure, thesis eq. 7.7).
     pub contact_offset: f64,
     /// Squirt angle, rad (positive: left of the heading).
     pub squirt: f64,
@@ -314,7 +315,7 @@ pub fn summary(scene: &Scene, shot: &Shot) -> String {
         let (ball, cue, s) = (&struck.id, &struck.cue, &struck.strike);
         let _ = writeln!(
             out,
-            "strike: {ball} at cue speed {:.3} m/s -> {:.3} m/s, squirt {:.2} deg, contact {:.1} mm off the cue axis",
+            "strike: {ball} at cue speed {:.3} m/s -> {:.3} m/s, squirt {:.2} deg, contact {:.1} mm off centre across the cue line",
             cue.speed,
             s.state.vel.norm(),
             s.squirt.to_degrees(),
