@@ -681,37 +681,14 @@ fn a_wide_deep_pocket_keeps_a_ball_in_it_or_on_the_table() {
     // an event, or at rest where a scene may place it (the shelf of a deep pocket included).
     let r = 0.0262;
     let mut shots = 0;
-    for (mouth_key, mouth, pocket, starts) in [
-        (
-            "corner_mouth",
-            0.09,
-            [0.0, 0.0],
-            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
-        ),
-        (
-            "corner_mouth",
-            0.12,
-            [0.0, 0.0],
-            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
-        ),
-        (
-            "corner_mouth",
-            0.2,
-            [0.0, 0.0],
-            [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]],
-        ),
-        (
-            "middle_mouth",
-            0.15,
-            [1.7845, 0.0],
-            [[1.5, 0.3], [2.1, 0.3], [1.79, 0.5]],
-        ),
-        (
-            "middle_mouth",
-            0.3,
-            [1.7845, 0.0],
-            [[1.5, 0.3], [2.1, 0.3], [1.79, 0.5]],
-        ),
+    let corner = ([0.0, 0.0], [[0.5, 0.18], [0.3, 0.6], [0.6, 0.5]]);
+    let middle = ([1.7845, 0.0], [[1.5, 0.3], [2.1, 0.3], [1.79, 0.5]]);
+    for (mouth_key, mouth, (pocket, starts)) in [
+        ("corner_mouth", 0.09, corner),
+        ("corner_mouth", 0.12, corner),
+        ("corner_mouth", 0.2, corner),
+        ("middle_mouth", 0.15, middle),
+        ("middle_mouth", 0.3, middle),
     ] {
         for fall_depth in [0.0, 0.2, 0.385, 0.5] {
             for start in starts {
