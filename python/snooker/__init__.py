@@ -24,6 +24,7 @@ on, the scores, whose turn), ``frame.play(strike)`` simulates a stroke and judge
 
 from __future__ import annotations
 
+import math
 import numbers
 import os
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Union
@@ -319,7 +320,8 @@ def plan(
 
     ``noise``: the execution noise: ``"standard"`` (the default: the computational pool
     tournaments' noise, aim 0.125 deg, elevation 0.1 deg, speed 0.075 m/s, side and height
-    0.5 mm), ``0`` (none), or a dict of standard deviations changing the standard noise, e.g.
+    0.5 mm), ``"standard*K"`` (every component times K), ``0`` or ``"0"`` (none), or a dict of
+    standard deviations changing the standard noise, e.g.
     ``{"aim": 0.002, "speed": 0.04}`` (keys ``aim``, ``elevation`` rad, ``speed`` m/s,
     ``side``, ``height`` m; ``offset`` sets both side and height; before, ``speed`` was a
     fraction of the cue speed: the old ``speed=F`` at cue speed V is ``F*V``); ``bounds``:
@@ -414,11 +416,24 @@ def choose(
 
 def _noise(noise) -> dict:
     """The noise argument as the extension takes it: standard deviations by name, changing
-    the standard noise."""
-    if noise is None or (isinstance(noise, str) and noise == "standard"):
+    the standard noise. The strings are the command line's whole-noise spellings:
+    ``"standard"``, ``"standard*K"`` (every component times K >= 0), ``"0"`` or ``"none"``."""
+    if noise is None or (isinstance(noise, str) and noise.strip() == "standard"):
         return {}
     if isinstance(noise, str):
-        raise ValueError(f"noise: expected 'standard', 0 or a dict, got {noise!r}")
+        spec = noise.strip()
+        if spec in ("0", "none"):
+            return {k: 0.0 for k in _snooker.STANDARD_NOISE}
+        if spec.startswith("standard*"):
+            try:
+                k = float(spec[len("standard*"):])
+            except ValueError:
+                k = math.nan
+            if not (math.isfinite(k) and k >= 0.0):
+                raise ValueError(f"noise: expected standard*K with K >= 0, got {noise!r}")
+            return {name: k * sd for name, sd in _snooker.STANDARD_NOISE.items()}
+        raise ValueError(
+            f"noise: expected 'standard', 'standard*K', 0 or a dict, got {noise!r}")
     if isinstance(noise, dict):
         return {str(k): _number(v, f"noise['{k}']") for k, v in noise.items()}
     if isinstance(noise, (bool, np.bool_)) or not isinstance(noise, numbers.Real):

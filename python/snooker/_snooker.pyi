@@ -5,6 +5,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 #: Most threads ``simulate_many`` starts (``snooker batch``'s limit).
 MAX_THREADS: int
+STANDARD_NOISE: dict[str, float]
 
 class SimulationError(RuntimeError):
     """A valid scene that the engine could not simulate to its end."""

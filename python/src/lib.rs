@@ -470,6 +470,12 @@ fn impact_cushion(
 fn _snooker(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Scene>()?;
     m.add("MAX_THREADS", snooker_batch::run::MAX_THREADS)?;
+    // The standard noise by component, for the `"standard*K"` spelling of `noise`.
+    let standard = pyo3::types::PyDict::new(m.py());
+    for c in snooker_planner::NoiseComponent::ALL {
+        standard.set_item(c.name(), snooker_planner::Noise::STANDARD.get(c))?;
+    }
+    m.add("STANDARD_NOISE", standard)?;
     m.add_class::<Shot>()?;
     m.add_class::<rules::Frame>()?;
     m.add_class::<rules::Verdict>()?;

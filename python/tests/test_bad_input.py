@@ -210,6 +210,8 @@ def test_simulate_many_with_far_more_threads_than_scenes_returns_at_once():
     ({"noise": {"aim": True}}, TypeError, r"noise\['aim'\]: a number"),
     ({"noise": [1]}, TypeError, r"noise: expected 'standard', 0 or a dict"),
     ({"noise": False}, TypeError, r"noise: expected 'standard', 0 or a dict"),
+    ({"noise": "standard*-1"}, ValueError, r"noise: expected standard\*K with K >= 0"),
+    ({"noise": "loud"}, ValueError, r"noise: expected 'standard', 'standard\*K', 0 or a dict"),
 ])
 def test_plan_refuses_a_malformed_argument_naming_it(kw, error, message):
     # Before: "too many values to unpack", AttributeError "'list' object has no attribute
@@ -227,6 +229,21 @@ def test_plan_takes_numpy_pairs_and_numbers():
              tolerance=np.float32(0.001))
     b = plan(noise={"aim": 0.002}, bounds={"speed": (0.3, 6.0)})
     assert a.best == b.best
+
+
+def test_the_command_lines_whole_noise_spellings_are_taken():
+    # "0" and "standard*2" are `--noise` spellings; Python refused them (only "standard", the
+    # number 0 and a dict were taken).
+    def doc(noise):
+        d = plan(noise=noise).to_dict()
+        del d["wall_time"]
+        return d
+
+    twice = {k: 2.0 * v for k, v in snooker._snooker.STANDARD_NOISE.items()}
+    assert doc("standard*2") == doc(twice)
+    assert doc("standard*2")["best"]["robustness"]["noise"]["speed"] == 0.15
+    assert doc("0") == doc(0)
+    assert doc("standard*1") == doc("standard")
 
 
 def test_plan_takes_a_huge_finite_noise_as_the_command_line_does():
