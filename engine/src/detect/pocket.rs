@@ -79,13 +79,12 @@ pub fn far_edge_time(
 }
 
 /// First time in [0, window] at which `path`'s centre crosses the line of `pocket`'s back
-/// (the fall's diameter across the pocket's axis), moving out, beside the fall and near the
-/// pocket (within its opening's reach and a mouth's width more: the facings, which reach past
-/// the back, confine a ball on the cloth to less): the pocket's back (module docs). A
+/// (the fall's diameter across the pocket's axis), moving out, beside the fall and within
+/// [`Pocket::back_reach`] of the mouth: the pocket's back (module docs). A
 /// centre that reaches the line over the fall is the fall's ([`capture_time`],
 /// [`far_edge_time`]).
 pub fn back_time(path: &Path, pocket: &Pocket, window: f64) -> Option<f64> {
-    let reach = pocket.opening_reach() + pocket.mouth_width;
+    let reach = pocket.back_reach();
     let plan = path.plan();
     line_contacts(&plan, pocket.centre, -pocket.axis(), 0.0, window)
         .find(|(_, at)| {

@@ -249,7 +249,7 @@ impl Sim<'_> {
             // Over a pocket's opening: drops in, or clears the pocket's back
             // (detect/pocket.rs).
             for (k, pk) in table.pockets.iter().enumerate() {
-                if !reach.near_point(pk.mouth, pk.opening_reach()) {
+                if !reach.near_point(pk.mouth, pk.back_reach()) {
                     continue;
                 }
                 let over_fall = reach.near_point(pk.centre, pk.radius);
@@ -295,7 +295,7 @@ impl Sim<'_> {
                     found.push((t, Candidate::Pocket { pocket: k }));
                 }
                 // Beside a deep pocket's fall, its back (detect/pocket.rs).
-                if reach.near_point(pk.mouth, pk.opening_reach())
+                if reach.near_point(pk.mouth, pk.back_reach())
                     && let Some(t) = detect::pocket::back_time(&path, pk, window)
                 {
                     found.push((t, Candidate::Pocket { pocket: k }));

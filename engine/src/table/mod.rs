@@ -331,6 +331,13 @@ impl Pocket {
         self.mouth_width + deep.max(0.0)
     }
 
+    /// How far from the mouth's middle (plan) the pocket's back is looked for: the opening's
+    /// reach and a mouth's width more (the facings, which reach past the back, confine a ball
+    /// on the cloth to less; `detect::pocket::back_time`).
+    pub fn back_reach(&self) -> f64 {
+        self.opening_reach() + self.mouth_width
+    }
+
     /// The unit vector along the pocket's axis, from the mouth into the pocket (plan).
     pub fn axis(&self) -> Vec3 {
         (self.centre - self.mouth)
