@@ -50,29 +50,21 @@ pub fn failed(message: impl std::fmt::Display) -> ExitCode {
     ExitCode::from(FAILED)
 }
 
-/// Writes a recording's bytes to `out` (atomically) and, unless `quiet`, says where, on
-/// standard error when standard output carries the JSON; a write error is bad input.
-pub fn write_recording(
-    out: &std::path::Path,
-    bytes: &[u8],
-    quiet: bool,
-    json_to_stdout: bool,
-) -> Result<(), ExitCode> {
+/// Says, unless `quiet`, that the recording `out` was written, on standard error when
+/// standard output carries the JSON.
+pub fn say_recording_written(out: &std::path::Path, quiet: bool, json_to_stdout: bool) {
     use std::io::Write as _;
-    if let Err(e) = crate::output::write_atomic(out, bytes) {
-        return Err(bad_input(format!("--record {}: {e:#}", out.display())));
+    if quiet {
+        return;
     }
-    if !quiet {
-        let note = format!(
-            "recording written to {0} (open it with `rerun {0}`)",
-            out.display()
-        );
-        // Standard output may be carrying the JSON; a closed pipe is no error here.
-        let _ = if json_to_stdout {
-            writeln!(std::io::stderr(), "{note}")
-        } else {
-            writeln!(std::io::stdout(), "{note}")
-        };
-    }
-    Ok(())
+    let note = format!(
+        "recording written to {0} (open it with `rerun {0}`)",
+        out.display()
+    );
+    // Standard output may be carrying the JSON; a closed pipe is no error here.
+    let _ = if json_to_stdout {
+        writeln!(std::io::stderr(), "{note}")
+    } else {
+        writeln!(std::io::stdout(), "{note}")
+    };
 }

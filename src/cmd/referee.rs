@@ -242,38 +242,46 @@ pub fn run(args: Args) -> ExitCode {
         }
     };
 
-    if let (Some(out), Some(text)) = (json, doc) {
-        if out == "-" {
+    // Every file staged whole before any is put in place (output::Outputs).
+    let mut files = output::Outputs::default();
+    let mut staged = Ok(());
+    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &doc) {
+        staged = staged
+            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
+    }
+    if let (Some(out), Some(text)) = (&args.frame_out, &next_frame) {
+        staged = staged.and_then(|()| files.add("--frame-out", out, text.as_bytes()));
+    }
+    if let Some((out, bytes)) = &recording {
+        staged = staged.and_then(|()| files.add("--record", out, bytes));
+    }
+    if let Err(e) = staged.and_then(|()| files.commit()) {
+        return bad_input(e);
+    }
+    match (json, doc) {
+        (Some("-"), Some(text)) => {
             let mut stdout = std::io::stdout().lock();
             if writeln!(stdout, "{text}").is_err() {
                 return ExitCode::from(super::FAILED);
             }
-        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
-            return bad_input(format!("--json {out}: {e:#}"));
-        } else if !args.quiet {
-            outln!("result written to {out}");
         }
+        (Some(out), Some(_)) if !args.quiet => outln!("result written to {out}"),
+        _ => {}
     }
     if let Some(out) = &args.frame_out {
         match next_frame {
-            Some(text) => {
-                if let Err(e) = output::write_atomic(out, text.as_bytes()) {
-                    return bad_input(format!("--frame-out {}: {e:#}", out.display()));
-                }
-                if !args.quiet && !json_to_stdout {
-                    outln!("next frame written to {}", out.display());
-                }
+            Some(_) if !args.quiet && !json_to_stdout => {
+                outln!("next frame written to {}", out.display());
             }
+            Some(_) => {}
             None => eprintln!(
                 "the frame is over: --frame-out {} not written",
                 out.display()
             ),
         }
     }
-    if let Some((out, bytes)) = recording
-        && let Err(code) = super::write_recording(out, &bytes, args.quiet, json_to_stdout)
-    {
-        return code;
+    if let Some((out, _)) = recording {
+        super::say_recording_written(out, args.quiet, json_to_stdout);
     }
     ExitCode::SUCCESS
 }

@@ -94,24 +94,35 @@ pub fn run(args: Args) -> ExitCode {
             Err(e) => return failed(format!("--record {}: {e}", out.display())),
         },
     };
-    if let Some(out) = json {
+    let text = json.map(|_| {
         let doc = result::result_record(&scene, &shot);
-        let text = serde_json::to_string_pretty(&doc).expect("JSON of finite numbers");
-        if out == "-" {
+        serde_json::to_string_pretty(&doc).expect("JSON of finite numbers")
+    });
+    // Every file staged whole before any is put in place (output::Outputs).
+    let mut files = output::Outputs::default();
+    let mut staged = Ok(());
+    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &text) {
+        staged = staged
+            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
+    }
+    if let Some((out, bytes)) = &recording {
+        staged = staged.and_then(|()| files.add("--record", out, bytes));
+    }
+    if let Err(e) = staged.and_then(|()| files.commit()) {
+        return bad_input(e);
+    }
+    match (json, text) {
+        (Some("-"), Some(text)) => {
             let mut stdout = std::io::stdout().lock();
             if writeln!(stdout, "{text}").is_err() {
                 return ExitCode::from(super::FAILED);
             }
-        } else if let Err(e) = output::write_atomic(Path::new(out), (text + "\n").as_bytes()) {
-            return bad_input(format!("--json {out}: {e:#}"));
-        } else if !args.quiet {
-            outln!("result written to {out}");
         }
+        (Some(out), Some(_)) if !args.quiet => outln!("result written to {out}"),
+        _ => {}
     }
-    if let Some((out, bytes)) = recording
-        && let Err(code) = super::write_recording(&out, &bytes, args.quiet, json_to_stdout)
-    {
-        return code;
+    if let Some((out, _)) = &recording {
+        super::say_recording_written(out, args.quiet, json_to_stdout);
     }
     ExitCode::SUCCESS
 }
