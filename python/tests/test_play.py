@@ -111,7 +111,12 @@ def test_ctrl_c_stops_a_long_call(call):
     import time
 
     root = pathlib.Path(__file__).resolve().parents[2]
-    code = ("import snooker, sys\nprint('started', flush=True)\n"
+    # The child takes Python's own Ctrl-C handler whatever it inherits: a test command started
+    # in the background of a shell without job control (nohup, CI runners) has SIGINT ignored,
+    # which Python then leaves ignored, and the interrupt never arrived (stop 42's fresh clone).
+    code = ("import signal, snooker, sys\n"
+            "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
+            "print('started', flush=True)\n"
             f"try:\n    {call}\nexcept KeyboardInterrupt:\n    print('interrupted')\n"
             "    sys.exit(3)\n")
     child = subprocess.Popen([sys.executable, "-c", code], cwd=root, stdout=subprocess.PIPE,
