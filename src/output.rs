@@ -165,24 +165,45 @@ pub fn write_atomic(path: &std::path::Path, text: &[u8]) -> anyhow::Result<()> {
 #[derive(Default)]
 pub struct Outputs {
     files: Vec<(String, AtomicFile)>,
+    /// The first file that could not be staged (the later ones are not tried).
+    error: Option<String>,
 }
 
 impl Outputs {
-    /// Writes `bytes` for `path` (the output of `flag`) to its temporary file.
-    pub fn add(&mut self, flag: &str, path: &std::path::Path, bytes: &[u8]) -> Result<(), String> {
+    /// Writes `bytes` for `path` (the output of `flag`) to its temporary file; after a file
+    /// that could not be, does nothing ([`Outputs::commit`] reports it).
+    pub fn add(&mut self, flag: &str, path: &std::path::Path, bytes: &[u8]) {
+        if self.error.is_some() {
+            return;
+        }
         let label = format!("{flag} {}", path.display());
         let staged = AtomicFile::create(path).and_then(|mut f| {
             f.write(bytes)?;
             f.flush()?;
             Ok(f)
         });
-        let file = staged.map_err(|e| format!("{label}: {e:#}"))?;
-        self.files.push((label, file));
-        Ok(())
+        match staged {
+            Ok(file) => self.files.push((label, file)),
+            Err(e) => self.error = Some(format!("{label}: {e:#}")),
+        }
     }
 
-    /// Puts every file in place, in the order added.
+    /// `--json`'s document with its final newline, unless it goes to standard output (`-`).
+    pub fn add_json(&mut self, out: Option<&str>, text: Option<&String>) {
+        if let (Some(out), Some(text)) = (out.filter(|o| *o != "-"), text) {
+            self.add(
+                "--json",
+                std::path::Path::new(out),
+                format!("{text}\n").as_bytes(),
+            );
+        }
+    }
+
+    /// Puts every file in place, in the order added, or none if one could not be staged.
     pub fn commit(self) -> Result<(), String> {
+        if let Some(e) = self.error {
+            return Err(e);
+        }
         for (label, file) in self.files {
             file.commit().map_err(|e| format!("{label}: {e:#}"))?;
         }
@@ -305,12 +326,11 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("d"), "a file where a directory is needed").unwrap();
         let mut files = Outputs::default();
-        files.add("--log", &dir.join("log.jsonl"), b"{}\n").unwrap();
-        let e = files
-            .add("--json", &dir.join("d/sum.json"), b"{}")
-            .unwrap_err();
+        files.add("--log", &dir.join("log.jsonl"), b"{}\n");
+        files.add("--json", &dir.join("d/sum.json"), b"{}");
+        files.add("--record", &dir.join("r.rrd"), b"rrd");
+        let e = files.commit().unwrap_err();
         assert!(e.starts_with("--json "), "{e}");
-        drop(files);
         let mut left: Vec<_> = std::fs::read_dir(&dir)
             .unwrap()
             .map(|e| e.unwrap().file_name())
@@ -318,8 +338,8 @@ mod tests {
         left.sort();
         assert_eq!(left, ["d"]);
         let mut files = Outputs::default();
-        files.add("--log", &dir.join("log.jsonl"), b"{}\n").unwrap();
-        files.add("--json", &dir.join("e/sum.json"), b"{}").unwrap();
+        files.add("--log", &dir.join("log.jsonl"), b"{}\n");
+        files.add("--json", &dir.join("e/sum.json"), b"{}");
         files.commit().unwrap();
         assert_eq!(std::fs::read(dir.join("e/sum.json")).unwrap(), b"{}");
         assert_eq!(std::fs::read(dir.join("log.jsonl")).unwrap(), b"{}\n");

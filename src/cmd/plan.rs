@@ -12,7 +12,7 @@ use snooker_planner::{
     ShotKind, StrikeVariable,
 };
 use snooker_scene as scene;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
@@ -289,18 +289,14 @@ pub fn run(args: Args) -> ExitCode {
     let text = json.map(|_| serde_json::to_string_pretty(&plan).expect("JSON of finite numbers"));
     // Every file staged whole before any is put in place (output::Outputs).
     let mut files = output::Outputs::default();
-    let mut staged = Ok(());
-    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &text) {
-        staged = staged
-            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
-    }
+    files.add_json(json, text.as_ref());
     if let Some(out) = &args.scene_out {
-        staged = staged.and_then(|()| files.add("--scene-out", out, out_text.as_bytes()));
+        files.add("--scene-out", out, out_text.as_bytes());
     }
     if let Some((out, bytes)) = &recording {
-        staged = staged.and_then(|()| files.add("--record", out, bytes));
+        files.add("--record", out, bytes);
     }
-    if let Err(e) = staged.and_then(|()| files.commit()) {
+    if let Err(e) = files.commit() {
         return bad_input(e);
     }
     if let (Some("-"), Some(text)) = (json, text) {

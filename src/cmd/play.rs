@@ -10,7 +10,7 @@ use snooker_planner::Noise;
 use snooker_player::game::{DEFAULT_EFFORT, DEFAULT_MAX_STROKES};
 use snooker_player::{Agent, End, Game, Greedy, PlayOptions, Player, StrokeRecord, Until, play};
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Arguments of `snooker play`.
@@ -387,18 +387,14 @@ pub fn run(args: Args) -> ExitCode {
     };
     // Every file staged whole before any is put in place (output::Outputs).
     let mut files = output::Outputs::default();
-    let mut staged = Ok(());
     if let (Some(out), Some(text)) = (&args.log, &log) {
-        staged = staged.and_then(|()| files.add("--log", out, text.as_bytes()));
+        files.add("--log", out, text.as_bytes());
     }
-    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &doc) {
-        staged = staged
-            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
-    }
+    files.add_json(json, doc.as_ref());
     if let Some((out, bytes)) = &rrd {
-        staged = staged.and_then(|()| files.add("--record", out, bytes));
+        files.add("--record", out, bytes);
     }
-    if let Err(e) = staged.and_then(|()| files.commit()) {
+    if let Err(e) = files.commit() {
         return bad_input(e);
     }
     if let (Some("-"), Some(text)) = (json, doc) {

@@ -100,15 +100,11 @@ pub fn run(args: Args) -> ExitCode {
     });
     // Every file staged whole before any is put in place (output::Outputs).
     let mut files = output::Outputs::default();
-    let mut staged = Ok(());
-    if let (Some(out), Some(text)) = (json.filter(|o| *o != "-"), &text) {
-        staged = staged
-            .and_then(|()| files.add("--json", Path::new(out), (text.clone() + "\n").as_bytes()));
-    }
+    files.add_json(json, text.as_ref());
     if let Some((out, bytes)) = &recording {
-        staged = staged.and_then(|()| files.add("--record", out, bytes));
+        files.add("--record", out, bytes);
     }
-    if let Err(e) = staged.and_then(|()| files.commit()) {
+    if let Err(e) = files.commit() {
         return bad_input(e);
     }
     match (json, text) {
