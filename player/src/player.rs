@@ -180,16 +180,20 @@ impl Agent for Player {
             }
         }
         if all.is_empty() {
-            // Nothing potted or played safe legally without noise: the nearest ball on, full.
+            // Nothing potted, played safe, away or escaped legally without noise (every
+            // stroke tried fouls): the nearest ball on, full.
             let f = &frames[0];
             let (strike, b) = crate::greedy::nearest_full(f).ok_or(ChooseError::NoStrike)?;
             let kind = f.balls()[b].kind;
             let nominated = candidates::nomination(f, kind);
             let g = f.with_nomination(nominated)?;
             let (value, _, sims) = sample(&g, &strike, &valuer, None, ctx, [0, 2, 0], MIN_SAMPLES);
-            used += sims;
-            let cue = f.cue_index().map_or([0.0; 2], |i| {
-                let p = f.balls()[i].state.pos;
+            used += sims + 1;
+            ctx.watch.count(1);
+            // Where the cue ball stops played without noise, as every safety's target.
+            let played = g.play(&strike).map_err(|_| ChooseError::NoStrike)?;
+            let cue = g.cue_index().map_or([0.0; 2], |i| {
+                let p = played.shot.final_states()[i].pos;
                 [p.x, p.y]
             });
             all.push(Evaluated {
