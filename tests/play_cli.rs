@@ -500,3 +500,44 @@ fn a_d_whose_grid_is_covered_still_gives_the_cue_ball_in_hand_a_place() {
         assert_eq!(lines(&log).len(), 1, "{opponent}");
     }
 }
+
+#[test]
+fn a_snookered_player_escapes_and_its_line_and_log_name_the_cushions() {
+    // The rules' frame: the cue ball behind the black, the pink on beyond it.
+    let dir = temp_dir("play-escape");
+    let log = dir.join("escape.jsonl");
+    let o = snooker(&[
+        "play",
+        "rules/tests/frames/free_ball_awarded.toml",
+        "--effort",
+        "300",
+        "--seed",
+        "5",
+        "--max-strokes",
+        "1",
+        "--log",
+        log.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let first = lines(&log).remove(0);
+    let via: Vec<&str> = first["plan"]["via"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert_eq!(first["plan"]["kind"], "safety");
+    assert!(!via.is_empty(), "no cushion in the log: {}", first["plan"]);
+    assert!(
+        out.contains(&format!("safety off pink via {}", via.join(", "))),
+        "{out}"
+    );
+    // The old player drove into the black (first_hit_not_on); this seed's executed escape
+    // meets the pink.
+    assert_eq!(
+        first["referee"]["first_hit"], "pink",
+        "{}",
+        first["referee"]
+    );
+}

@@ -16,7 +16,8 @@ export function describe(c) {
   const via = c.via && c.via.length ? ` off ${c.via.join(", ")}` : "";
   switch (c.kind) {
     case "safety":
-      return `safety off ${c.ball}`;
+      // An escape from a snooker names the cushions the cue ball meets first.
+      return `safety off ${c.ball}${c.via && c.via.length ? ` via ${c.via.join(", ")}` : ""}`;
     case "plant":
       return `plant: ${c.ball} onto ${c.pot} in ${c.pocket}`;
     case "double":

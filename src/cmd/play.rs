@@ -155,7 +155,11 @@ fn summary<'a>(file: &'a str, args: &Args, opts: &PlayOptions, game: &Game) -> S
 fn line(s: &StrokeRecord) -> String {
     let p = &s.decision.plan;
     let what = match p.kind {
-        snooker_player::PlanKind::Safety => format!("safety off {}", p.ball),
+        snooker_player::PlanKind::Safety if p.via.is_empty() => format!("safety off {}", p.ball),
+        // An escape from a snooker: the cushions the cue ball meets first.
+        snooker_player::PlanKind::Safety => {
+            format!("safety off {} via {}", p.ball, p.via.join(", "))
+        }
         k => format!("{} {} in {}", k.name(), p.pot, p.pocket),
     };
     let v = &s.verdict;
