@@ -45,20 +45,6 @@ const KINDS: [BallKind; 6] = [
     BallKind::Black,
 ];
 
-/// A frame of `balls` (the cue ball among them) with `state`, as the open table's.
-fn frame_of(template: &Frame, balls: Vec<Ball>, state: FrameState) -> Option<Frame> {
-    Frame::new(
-        "snookers",
-        template.table().clone(),
-        *template.params(),
-        *template.models(),
-        *template.options(),
-        balls,
-        state,
-    )
-    .ok()
-}
-
 /// A point of the cloth at least 5 cm from the cushions, clear of `balls` by 2 mm.
 fn clear_point(d: &mut Draw, dims: &SnookerDims, balls: &[Ball], r: f64) -> Option<Vec3> {
     for _ in 0..1000 {
@@ -99,27 +85,26 @@ fn hidden(c: Vec3, o: Vec3, others: &[Vec3], r: f64) -> bool {
     })
 }
 
-/// A snookered position in the closing colours, if the draw gives one.
-fn snookered_position(seed: u64, template: &Frame) -> Option<Frame> {
-    let mut d = Draw(seed);
+/// The closing colours from one drawn at random to the black, scattered over the cloth; the
+/// first is the colour on.
+fn scatter(d: &mut Draw, r: f64) -> Option<(usize, Vec<Ball>)> {
     let dims = SnookerDims::default();
-    let r = template.params().ball_radius;
     let first = (d.next() * 5.999) as usize;
     let mut balls: Vec<Ball> = Vec::new();
     for (k, kind) in KINDS.iter().enumerate().skip(first) {
-        let p = clear_point(&mut d, &dims, &balls, r)?;
+        let p = clear_point(d, &dims, &balls, r)?;
         balls.push(Ball {
             id: Colour::ALL[k].name().to_string(),
             kind: *kind,
             state: BallState::at_rest(p.x, p.y, r),
         });
     }
-    let c = clear_point(&mut d, &dims, &balls, r)?;
-    let on = [balls[0].state.pos];
-    let not_on: Vec<Vec3> = balls[1..].iter().map(|b| b.state.pos).collect();
-    if !snookered::is_snookered(c, &on, &not_on, r) || !hidden(c, on[0], &not_on, r) {
-        return None;
-    }
+    Some((first, balls))
+}
+
+/// The frame of `balls` with the cue ball at `c`, colour `first` on, player 0 to play.
+fn closing(template: &Frame, first: usize, mut balls: Vec<Ball>, c: Vec3) -> Option<Frame> {
+    let r = template.params().ball_radius;
     balls.push(Ball {
         id: "cue".into(),
         kind: BallKind::Cue,
@@ -130,7 +115,30 @@ fn snookered_position(seed: u64, template: &Frame) -> Option<Frame> {
         ball_in_hand: false,
         ..FrameState::start(0)
     };
-    frame_of(template, balls, state)
+    Frame::new(
+        "snookers",
+        template.table().clone(),
+        *template.params(),
+        *template.models(),
+        *template.options(),
+        balls,
+        state,
+    )
+    .ok()
+}
+
+/// A snookered position in the closing colours, if the draw gives one.
+fn snookered_position(seed: u64, template: &Frame) -> Option<Frame> {
+    let mut d = Draw(seed);
+    let r = template.params().ball_radius;
+    let (first, balls) = scatter(&mut d, r)?;
+    let c = clear_point(&mut d, &SnookerDims::default(), &balls, r)?;
+    let on = [balls[0].state.pos];
+    let not_on: Vec<Vec3> = balls[1..].iter().map(|b| b.state.pos).collect();
+    if !snookered::is_snookered(c, &on, &not_on, r) || !hidden(c, on[0], &not_on, r) {
+        return None;
+    }
+    closing(template, first, balls, c)
 }
 
 /// The closing colours scattered as for a snooker, the cue ball laid against the colour on at
@@ -139,16 +147,7 @@ fn touching_position(seed: u64, template: &Frame) -> Option<Frame> {
     let mut d = Draw(seed);
     let dims = SnookerDims::default();
     let r = template.params().ball_radius;
-    let first = (d.next() * 5.999) as usize;
-    let mut balls: Vec<Ball> = Vec::new();
-    for (k, kind) in KINDS.iter().enumerate().skip(first) {
-        let p = clear_point(&mut d, &dims, &balls, r)?;
-        balls.push(Ball {
-            id: Colour::ALL[k].name().to_string(),
-            kind: *kind,
-            state: BallState::at_rest(p.x, p.y, r),
-        });
-    }
+    let (first, balls) = scatter(&mut d, r)?;
     let a = d.next() * std::f64::consts::TAU;
     let c = balls[0].state.pos + 2.0 * r * Vec3::new(a.cos(), a.sin(), 0.0);
     let inside = c.x > 0.05 && c.y > 0.05 && c.x < dims.length - 0.05 && c.y < dims.width - 0.05;
@@ -158,17 +157,7 @@ fn touching_position(seed: u64, template: &Frame) -> Option<Frame> {
     if !inside || !clear {
         return None;
     }
-    balls.push(Ball {
-        id: "cue".into(),
-        kind: BallKind::Cue,
-        state: BallState::at_rest(c.x, c.y, r),
-    });
-    let state = FrameState {
-        on: On::Closing(Colour::ALL[first]),
-        ball_in_hand: false,
-        ..FrameState::start(0)
-    };
-    frame_of(template, balls, state)
+    closing(template, first, balls, c)
 }
 
 fn main() {

@@ -109,6 +109,22 @@ fn aim_past(frame: &Frame, from: Vec3, to: Vec3, across: f64) -> f64 {
     d.y.atan2(d.x) + off
 }
 
+/// Safeties off ball `b` along `aim` from `f` (the nomination made) at every safety speed and
+/// height, added to `jobs`.
+fn plain(jobs: &mut Vec<Job>, b: usize, nominated: Option<Colour>, f: &Frame, aim: f64) {
+    for &speed in &SAFETY_SPEEDS {
+        for &h in &SAFETY_HEIGHTS {
+            jobs.push(Job {
+                ball: b,
+                nominated,
+                frame: f.clone(),
+                strike: strike(f, aim, speed, h),
+                via: Vec::new(),
+            });
+        }
+    }
+}
+
 /// The balls on in `on` struck directly, full, half and thin.
 fn direct(frame: &Frame, on: &[usize]) -> Vec<Job> {
     let Some(cue) = frame.cue_index() else {
@@ -122,18 +138,7 @@ fn direct(frame: &Frame, on: &[usize]) -> Vec<Job> {
         };
         let o = frame.balls()[b].state.pos;
         for &across in &SAFETY_CONTACTS {
-            let aim = aim_past(frame, c, o, across);
-            for &speed in &SAFETY_SPEEDS {
-                for &h in &SAFETY_HEIGHTS {
-                    jobs.push(Job {
-                        ball: b,
-                        nominated,
-                        frame: f.clone(),
-                        strike: strike(frame, aim, speed, h),
-                        via: Vec::new(),
-                    });
-                }
-            }
+            plain(&mut jobs, b, nominated, &f, aim_past(frame, c, o, across));
         }
     }
     jobs
@@ -154,17 +159,7 @@ fn away(frame: &Frame) -> Vec<Job> {
         let from = c - frame.balls()[b].state.pos;
         let straight_away = from.y.atan2(from.x);
         for &turn in &AWAY_TURNS {
-            for &speed in &SAFETY_SPEEDS {
-                for &h in &SAFETY_HEIGHTS {
-                    jobs.push(Job {
-                        ball: b,
-                        nominated,
-                        frame: f.clone(),
-                        strike: strike(frame, straight_away + turn, speed, h),
-                        via: Vec::new(),
-                    });
-                }
-            }
+            plain(&mut jobs, b, nominated, &f, straight_away + turn);
         }
     }
     jobs
