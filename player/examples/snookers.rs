@@ -135,7 +135,7 @@ fn snookered_position(seed: u64, template: &Frame) -> Option<Frame> {
     let c = clear_point(&mut d, &SnookerDims::default(), &balls, r)?;
     let on = [balls[0].state.pos];
     let not_on: Vec<Vec3> = balls[1..].iter().map(|b| b.state.pos).collect();
-    if !snookered::is_snookered(c, &on, &not_on, r) || !hidden(c, on[0], &not_on, r) {
+    if !snookered::is_snookered(c, &on, &not_on, &[], r) || !hidden(c, on[0], &not_on, r) {
         return None;
     }
     closing(template, first, balls, c)

@@ -102,15 +102,18 @@ impl Frame {
         // as hit, so playing away from it is no foul whatever the cue ball meets next (8(c)).
         let touching = self.touching();
         let pushed = touching.iter().any(|&i| moved_at_start(shot, cue, i));
-        let deemed_hit = !pushed && touching.iter().any(|&i| on(i));
+        // With a free ball nominated, only it may be the ball deemed hit (Rule 12(c)(i)).
+        let free = self.free_ball_nominated();
+        let deemed_hit = !pushed
+            && touching
+                .iter()
+                .any(|&i| free.map_or(on(i), |k| kind(i) == k));
 
         // Fouls, in the contract's order.
         let mut reasons = Vec::new();
         // With a free ball nominated, the cue ball must meet it first, alone or at the same
         // instant as the ball on (WPBSA Section 3 Rule 12(c)(i)).
-        let free_missed = self
-            .free_ball_nominated()
-            .is_some_and(|free| !h.first.iter().any(|&i| kind(i) == free));
+        let free_missed = free.is_some_and(|free| !h.first.iter().any(|&i| kind(i) == free));
         let first_not_on = free_missed || h.first.iter().any(|&i| !on(i));
         if deemed_hit {
             // Played away from a touching ball on: it was the ball hit.
@@ -366,7 +369,8 @@ impl Frame {
         }
         let r = self.params().ball_radius;
         free_at.is_some_and(|k| {
-            snookered::effective_snookering(finals[cue].pos, &on, &others, r).contains(&k)
+            let curved = snookered::curved_faces(self.table(), self.params());
+            snookered::effective_snookering(finals[cue].pos, &on, &others, &curved, r).contains(&k)
         })
     }
 
@@ -389,9 +393,10 @@ impl Frame {
             }
         }
         let r = self.params().ball_radius;
+        let curved = snookered::curved_faces(self.table(), self.params());
         match cue {
-            Some(c) if !in_hand => snookered::is_snookered(c, &on_pos, &not_on, r),
-            _ => snookered::is_snookered_in_hand(&self.the_d(), &on_pos, &not_on, r),
+            Some(c) if !in_hand => snookered::is_snookered(c, &on_pos, &not_on, &curved, r),
+            _ => snookered::is_snookered_in_hand(&self.the_d(), &on_pos, &not_on, &curved, r),
         }
     }
 }

@@ -425,6 +425,42 @@ fn a_foul_that_leaves_the_incoming_player_snookered_gives_a_free_ball() {
 }
 
 #[test]
+fn a_jaw_nearer_than_the_snookering_ball_leaves_no_free_ball() {
+    let (f, v) = play("free_ball_not_by_a_jaw");
+    assert_eq!(foul(&v), (FoulReason::NoBallHit, 6));
+    let n = next(&f, &v);
+    let at = |id: &str| pos_of(&n, id).unwrap();
+    // The black alone hides both edges of the pink from where the cue ball stopped...
+    assert!(snookered::is_snookered(
+        at("cue"),
+        &[at("pink")],
+        &[at("black")],
+        &[],
+        R
+    ));
+    // ... but the pocket's jaw is met first on both (Section 2 Rule 17(e)): not snookered.
+    let curved = snookered::curved_faces(n.table(), n.params());
+    assert!(!snookered::is_snookered(
+        at("cue"),
+        &[at("pink")],
+        &[at("black")],
+        &curved,
+        R
+    ));
+    assert!(!n.state().free_ball);
+    // Without the jaws, the black nearer the cue ball than any jaw is a snooker: a ball
+    // beside the cue ball on the pink's line.
+    let beside = at("cue") + Vec3::new(-0.06, 0.003, 0.0);
+    assert!(snookered::is_snookered(
+        at("cue"),
+        &[at("pink")],
+        &[beside],
+        &curved,
+        R
+    ));
+}
+
+#[test]
 fn with_the_cue_ball_in_hand_there_is_a_free_ball_only_if_snookered_from_all_the_d() {
     let f = load("free_ball_not_in_hand");
     // Where the cue ball lay, the black hides the pink...
@@ -433,6 +469,7 @@ fn with_the_cue_ball_in_hand_there_is_a_free_ball_only_if_snookered_from_all_the
         at("cue"),
         &[at("pink")],
         &[at("black")],
+        &[],
         R
     ));
     // ... but it is potted, and from the D the pink is in view: no free ball.
@@ -449,6 +486,7 @@ fn with_the_cue_ball_in_hand_there_is_a_free_ball_only_if_snookered_from_all_the
         &d,
         &[Vec3::new(2.5, 0.9, R)],
         &wall,
+        &[],
         R
     ));
     // With a gap in the middle of the wall, it is in view from the middle of the D.
@@ -462,6 +500,7 @@ fn with_the_cue_ball_in_hand_there_is_a_free_ball_only_if_snookered_from_all_the
         &d,
         &[Vec3::new(2.5, 0.9, R)],
         &gap,
+        &[],
         R
     ));
 }
@@ -525,6 +564,10 @@ fn a_touching_ball_must_not_be_moved_and_one_on_counts_as_hit() {
     let (_, v) = play("touching_red_pushed");
     assert_eq!(foul(&v), (FoulReason::PushStroke, 4));
     assert_eq!(v.scores, [10, 24]);
+    // With a free ball nominated, the touching red is not the ball to hit: played away,
+    // meeting nothing, a foul (Rule 12(c)(i)); the old referee called it legal.
+    let (_, v) = play("free_ball_touching_red_played_away");
+    assert_eq!(foul(&v), (FoulReason::NoBallHit, 4));
     // A touching ball not on does not count as hit (8(d)).
     let (f, v) = play("touching_black_played_away");
     assert_eq!(f.frame.touching().len(), 1);
