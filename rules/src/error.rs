@@ -181,7 +181,7 @@ pub enum Problem {
     #[error("the cue ball is in hand and must be placed on or within the lines of the D (WPBSA Section 3 Rule 5): ({:.4}, {:.4}) m is outside it", .0.x, .0.y)]
     OutsideD(Vec3),
     /// A cue ball in hand placed touching or overlapping another ball.
-    #[error("the cue ball in hand may not be placed touching a ball: ({:.4}, {:.4}) m is {:.4} mm from ball \"{other}\" (centres closer than 2R = {:.4} mm)", .pos.x, .pos.y, .gap * 1e3, .two_r * 1e3)]
+    #[error("the cue ball in hand may not be placed touching a ball: ({:.4}, {:.4}) m is {:.4} mm from ball \"{other}\" (centres 2R = {:.4} mm apart or closer)", .pos.x, .pos.y, .gap * 1e3, .two_r * 1e3)]
     Touching {
         /// The placement.
         pos: Vec3,
