@@ -383,6 +383,34 @@ fn the_same_shot_records_the_same_content() {
 }
 
 #[test]
+fn the_chunks_do_not_follow_the_wall_clock() {
+    // rerun's batcher cut chunks every 200 ms of wall clock by default (or every tick of
+    // RERUN_FLUSH_TICK_SECS), so the same shot recorded on a loaded machine came out in other
+    // chunks. Recorded twice by the command with a 1 microsecond tick asked for, the content
+    // must still be the same (on the old builder it was cut wherever the clock ticked).
+    let dir = scratch("cli-record-tick");
+    let decoded: Vec<Vec<String>> = ["a.rrd", "b.rrd"]
+        .iter()
+        .map(|name| {
+            let out = dir.join(name);
+            let run = Command::new(env!("CARGO_BIN_EXE_snooker"))
+                .args(["simulate", "--quiet", "--record", out.to_str().unwrap()])
+                .env("RERUN_FLUSH_TICK_SECS", "0.000001")
+                .output()
+                .unwrap();
+            assert!(
+                run.status.success(),
+                "{}",
+                String::from_utf8_lossy(&run.stderr)
+            );
+            content(&decode(&std::fs::read(&out).unwrap()))
+        })
+        .collect();
+    assert!(decoded[0].len() > 100);
+    assert_eq!(decoded[0], decoded[1]);
+}
+
+#[test]
 fn a_potted_ball_leaves_the_view_and_the_plots() {
     let (scene, shot) = cue_and_red("snooker", [2.9, 1.1], [1.2, 1.22], [1.0, 0.5]);
     let pot = shot

@@ -17,7 +17,7 @@ use rerun::external::re_sdk_types::blueprint::components::{
 };
 use rerun::external::re_sdk_types::blueprint::datatypes::{self, TextLogColumnKind};
 use rerun::external::uuid::Uuid;
-use rerun::{Color, RecordingStream, RecordingStreamBuilder};
+use rerun::{Color, RecordingStream};
 use snooker_engine::Vec3;
 
 /// Elevation of the default eye above the table plane, rad (looking down at 60 degrees).
@@ -119,7 +119,7 @@ pub fn send(
     extent: Option<(Vec3, Vec3)>,
     open_at: super::OpenAt,
 ) -> Result<(), RecordError> {
-    let (bp, storage) = RecordingStreamBuilder::new("snooker")
+    let (bp, storage) = super::builder()
         .enabled(true)
         .blueprint()
         .memory()

@@ -12,6 +12,7 @@ pub mod sample;
 mod table;
 
 use rerun::external::re_log_types::{EntityPath, EntityPathPart};
+use rerun::log::ChunkBatcherConfig;
 use rerun::{
     Arrows3D, Color, Ellipsoids3D, FillMode, LineStrips3D, Points3D, RecordingStream,
     RecordingStreamBuilder, Scalars, SeriesLines, StateChange, StateConfiguration, TextLog,
@@ -158,6 +159,17 @@ pub struct Overlay {
     pub radius: f64,
 }
 
+/// A recording's builder, its chunks cut by size only: rerun's default batcher also flushes
+/// every 200 ms of wall clock, so a loaded machine cut the same shot into other chunks (a
+/// fresh clone's test of equal recordings failed under load); the same shot must give the
+/// same recording.
+pub(crate) fn builder() -> RecordingStreamBuilder {
+    RecordingStreamBuilder::new("snooker").batcher_config(ChunkBatcherConfig {
+        flush_tick: std::time::Duration::MAX,
+        ..ChunkBatcherConfig::DEFAULT
+    })
+}
+
 /// Records `shot` (simulated from `scene`) and returns the `.rrd` file's bytes: the recording
 /// and the default blueprint that frames the table.
 pub fn encode(scene: &Scene, shot: &Shot, opts: &RecordOptions) -> Result<Vec<u8>, RecordError> {
@@ -210,7 +222,7 @@ pub fn encode_with_cuts(
         .map(|b| schedule.states(shot, b))
         .collect();
 
-    let (rec, storage) = RecordingStreamBuilder::new("snooker")
+    let (rec, storage) = builder()
         .recording_name(scene.name.clone())
         // A recording the user asked for is made whatever the RERUN environment variable says.
         .enabled(true)
