@@ -37,6 +37,34 @@ fn frame_with_strike(line: &Value) -> String {
     )
 }
 
+/// `via` names what a line goes by (formats.md, "Play log"): nothing for a direct pot, a
+/// double's cushions, the one ball of a plant (its `ball`, struck first) or a kiss, and for a
+/// safety nothing or an escape's one or two cushions (the default table's noses).
+fn check_via(k: usize, line: &Value) {
+    let table = snooker_engine::Table::snooker(&snooker_engine::SnookerDims::default());
+    let noses: Vec<&str> = table
+        .cushions
+        .iter()
+        .map(|c| c.name.as_str())
+        .filter(|n| !n.contains("facing"))
+        .collect();
+    let alternatives = line["plan"]["alternatives"].as_array().unwrap();
+    for p in std::iter::once(&line["plan"]).chain(alternatives) {
+        let via = p["via"].as_array().unwrap();
+        let cushions = via.iter().all(|c| noses.contains(&c.as_str().unwrap()));
+        match p["kind"].as_str().unwrap() {
+            "direct" => assert!(via.is_empty(), "line {k}: {p}"),
+            "safety" => assert!(via.len() <= 2 && cushions, "line {k}: {p}"),
+            "double" => assert!(
+                !via.is_empty() && cushions && p["ball"] == p["pot"],
+                "line {k}: {p}"
+            ),
+            "plant" => assert!(via.len() == 1 && p["ball"] == via[0], "line {k}: {p}"),
+            _ => assert!(via.len() == 1 && p["ball"] == p["pot"], "line {k}: {p}"),
+        }
+    }
+}
+
 fn play(dir: &Path, extra: &[&str], log: &str) -> std::process::Output {
     let log = dir.join(log);
     let mut args = vec!["play", OPEN, "--log", log.to_str().unwrap(), "--quiet"];
@@ -87,18 +115,7 @@ fn every_logged_stroke_replays_through_the_referee() {
             ["pot", "pocket", "kind", "pot_probability", "cue_to"],
             "line {k}"
         );
-        // `via` names what a line goes by: nothing for a direct pot or a safety, a double's
-        // cushions, the one ball of a plant (its `ball`, struck first) or a kiss.
-        let alternatives = line["plan"]["alternatives"].as_array().unwrap();
-        for p in std::iter::once(&line["plan"]).chain(alternatives) {
-            let via = p["via"].as_array().unwrap();
-            match p["kind"].as_str().unwrap() {
-                "direct" | "safety" => assert!(via.is_empty(), "line {k}: {p}"),
-                "double" => assert!(!via.is_empty() && p["ball"] == p["pot"], "line {k}: {p}"),
-                "plant" => assert!(via.len() == 1 && p["ball"] == via[0], "line {k}: {p}"),
-                _ => assert!(via.len() == 1 && p["ball"] == p["pot"], "line {k}: {p}"),
-            }
-        }
+        check_via(k, line);
         assert!(line["referee"].get("shot").is_none());
         assert_eq!(line["stroke"].as_u64(), Some(k as u64 + 1));
         let file = dir.join(format!("stroke{}.toml", k + 1));
@@ -527,6 +544,7 @@ fn a_snookered_player_escapes_and_its_line_and_log_name_the_cushions() {
         .iter()
         .map(|v| v.as_str().unwrap())
         .collect();
+    check_via(0, &first);
     assert_eq!(first["plan"]["kind"], "safety");
     assert!(!via.is_empty(), "no cushion in the log: {}", first["plan"]);
     assert!(
