@@ -186,6 +186,26 @@ fn a_cue_ball_in_hand_goes_in_the_d_touching_no_ball() {
         "frame.ball_in_hand",
         "no cue ball on the table",
     );
+    // In hand, not listed, and struck: the strike has no ball to strike until it is placed.
+    let e = err(&format!(
+        "{CUE}{}",
+        frame("on = \"red\"\nball_in_hand = true", &no_cue)
+    ));
+    assert_eq!(e.key, "cue.ball", "{e}");
+    assert!(
+        e.reason.contains("no ball with id \"cue\"")
+            && e.reason
+                .contains("a cue ball in hand is struck from where it is placed"),
+        "{e}"
+    );
+    // The same frame without a strike is a frame to place the cue ball in.
+    assert!(
+        snooker_rules::parse(
+            &frame("on = \"red\"\nball_in_hand = true", &no_cue),
+            "ok.toml"
+        )
+        .is_ok()
+    );
 }
 
 #[test]

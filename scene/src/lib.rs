@@ -103,7 +103,18 @@ pub struct WithFrame<X> {
 
 fn with_frame<X>(mut spec: file::SceneFile<X>, file: &str) -> Result<WithFrame<X>, SceneError> {
     let frame = spec.frame.take();
-    let (scene, ball_keys) = build::build_keyed(spec, file)?;
+    let in_frame = frame.is_some();
+    let (scene, ball_keys) = build::build_keyed(spec, file).map_err(|mut e| {
+        // A frame's cue ball in hand is not on the table until it is placed (formats.md,
+        // "Frame"): say so where the strike names a ball the file does not list.
+        if in_frame && e.key == "cue.ball" {
+            e.reason.push_str(
+                " (a cue ball in hand is struck from where it is placed: list it under \
+                 [[balls]], in the D)",
+            );
+        }
+        e
+    })?;
     Ok(WithFrame {
         scene,
         frame,
