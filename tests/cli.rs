@@ -53,6 +53,7 @@ fn default_run_prints_a_summary_and_writes_the_contract() {
         "roll_to_spin",
         "roll_to_stop",
         "spin_to_stop",
+        "lift_off",
         "landing",
     ];
     let motions = [

@@ -67,5 +67,7 @@ fn the_break_off_ends_exactly_where_it_always_has() {
     assert_eq!(h, PINNED_BREAK_OFF, "{h:#018x}");
 }
 
-/// The break-off's fingerprint (`final_state_hash`).
-const PINNED_BREAK_OFF: u64 = 0x43c4_7a34_78d2_04ef;
+/// The break-off's fingerprint (`final_state_hash`). It was 0x43c4_7a34_78d2_04ef with 131
+/// events until the 23 `lift_off` events were reported (2026-11-28): counting all but those,
+/// the new engine gives that old value, so the physics is bit for bit as it was.
+const PINNED_BREAK_OFF: u64 = 0x758e_10ff_e304_9822;

@@ -9,7 +9,6 @@ use crate::data::{MAX_NOISE, MAX_TRACK_COORD, MIN_NOISE, MIN_SIGMA};
 use crate::data::{MeasuredStrike, Moment, Quantity};
 use crate::data::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
-use snooker_engine::motion::Transition;
 use snooker_engine::shown::Shown;
 use snooker_engine::{EventKind, Models, Params};
 use snooker_scene::{self as scene, Scene, SceneError};
@@ -246,28 +245,6 @@ fn read_tracks(
     Ok(out)
 }
 
-/// Every event kind by its result name.
-fn event_kind(name: &str) -> Option<EventKind> {
-    let mut kinds = vec![
-        EventKind::BallBall,
-        EventKind::BallCushion,
-        EventKind::BallPocket,
-    ];
-    kinds.extend(
-        [
-            Transition::SlideToRoll,
-            Transition::SlideToSpin,
-            Transition::SlideToStop,
-            Transition::RollToSpin,
-            Transition::RollToStop,
-            Transition::SpinToStop,
-            Transition::Landing,
-        ]
-        .map(EventKind::Transition),
-    );
-    kinds.into_iter().find(|k| k.name() == name)
-}
-
 /// Parses `after:ball_cushion#1` or `rolling:ball_ball#2` (`#1` may be left out).
 fn moment(s: &str) -> Result<Moment, String> {
     let (how, rest) = s
@@ -283,7 +260,8 @@ fn moment(s: &str) -> Result<Moment, String> {
         ),
         None => (rest, 1),
     };
-    let kind = event_kind(kind).ok_or_else(|| format!("`{kind}` is not an event kind"))?;
+    let kind =
+        EventKind::from_name(kind).ok_or_else(|| format!("`{kind}` is not an event kind"))?;
     match how {
         "after" => Ok(Moment::After { kind, n }),
         "rolling" => Ok(Moment::Rolling { kind, n }),

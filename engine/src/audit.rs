@@ -303,6 +303,14 @@ pub enum Violation {
         /// The least time the bound allows, s.
         least: f64,
     },
+    /// A ball an impact sent off the cloth without a `lift_off` event for it at that instant,
+    /// or a `lift_off` event for a ball that did not leave the cloth there ([`flights`]).
+    LiftOffUnmatched {
+        /// Which ball.
+        ball: String,
+        /// When, s.
+        t: f64,
+    },
     /// A shot that ended at rest with a ball still moving.
     StillMoving {
         /// Which ball.
@@ -328,6 +336,11 @@ impl std::fmt::Display for Violation {
                 f,
                 "ball {ball} is off the table at t = {t}, at ({:.4}, {:.4}) m, still in play",
                 pos[0], pos[1]
+            ),
+            Violation::LiftOffUnmatched { ball, t } => write!(
+                f,
+                "ball {ball} left the cloth at t = {t} without its one lift_off event, or a \
+                 lift_off came without it leaving"
             ),
             Violation::MicroCollisionLift { ball, t } => write!(
                 f,
@@ -540,6 +553,7 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
         k = end;
     }
     out.extend(resting_contacts(shot));
+    out.extend(flights(shot));
     if shot.ending == Ending::AtRest {
         for (tr, s) in shot.tracks.iter().zip(shot.final_states()) {
             // A ball spinning in place with no sidespin decay spins for ever: the shot is over.
@@ -552,6 +566,43 @@ pub fn events(shot: &Shot, max_overlap: f64) -> Vec<Violation> {
             }
         }
     }
+    out
+}
+
+/// Every flight that an impact opens is announced by one `lift_off` event of its ball at the
+/// impact's instant, after it, and no `lift_off` comes otherwise (formats.md, "Result").
+pub fn flights(shot: &Shot) -> Vec<Violation> {
+    let mut out = Vec::new();
+    // Balls sent off the cloth at the current instant and not yet announced.
+    let mut pending: Vec<usize> = Vec::new();
+    let mut now = f64::NAN;
+    let unmatched = |b: usize, t: f64| Violation::LiftOffUnmatched {
+        ball: shot.tracks[b].id.clone(),
+        t,
+    };
+    for e in &shot.events {
+        if e.t != now {
+            out.extend(pending.drain(..).map(|b| unmatched(b, now)));
+            now = e.t;
+        }
+        if e.kind == EventKind::LiftOff {
+            for &b in &e.balls {
+                match pending.iter().position(|&q| q == b) {
+                    Some(k) => {
+                        pending.remove(k);
+                    }
+                    None => out.push(unmatched(b, e.t)),
+                }
+            }
+            continue;
+        }
+        for ((&b, s0), s1) in e.balls.iter().zip(&e.before).zip(&e.after) {
+            if s0.motion != Motion::Airborne && s1.motion == Motion::Airborne {
+                pending.push(b);
+            }
+        }
+    }
+    out.extend(pending.drain(..).map(|b| unmatched(b, now)));
     out
 }
 

@@ -171,3 +171,56 @@ fn free_flight_lands_after_two_vz_over_g_with_spin_frozen() {
     let top = shot.tracks[0].state_at(0.15 / p.g, &p);
     assert!((top.pos.z - p.ball_radius - 0.15 * 0.15 / (2.0 * p.g)).abs() < 1e-15);
 }
+
+#[test]
+fn a_hop_opens_with_a_lift_off_at_its_impact_and_closes_with_a_landing() {
+    // A rolling cue ball head-on into a resting ball hops off it (thesis §6.1.6: the contact's
+    // friction pulls it up), a fraction of a millimetre.
+    let p = Params::default();
+    let r = p.ball_radius;
+    let mut setup = common::one_ball_setup(
+        BallState {
+            pos: Vec3::new(0.0, 0.0, r),
+            vel: Vec3::new(2.0, 0.0, 0.0),
+            spin: Vec3::new(0.0, 2.0 / r, 0.0),
+            motion: Motion::Rolling,
+        },
+        p,
+    );
+    setup.balls.push(snooker_engine::Ball {
+        id: "red".into(),
+        kind: snooker_engine::BallKind::Red,
+        state: BallState::at_rest(0.3, 0.0, r),
+    });
+    let shot = simulate(&setup, &SimOptions::default()).unwrap();
+    common::check_shot(&setup, &shot);
+    let k = shot
+        .events
+        .iter()
+        .position(|e| e.kind == EventKind::BallBall)
+        .unwrap();
+    let (hit, lift) = (&shot.events[k], &shot.events[k + 1]);
+    assert_eq!(hit.after[0].motion, Motion::Airborne, "no hop: {hit:?}");
+    assert_eq!(lift.kind, EventKind::LiftOff);
+    assert_eq!((lift.t, &lift.balls), (hit.t, &vec![0]));
+    assert_eq!(
+        (lift.before[0], lift.after[0]),
+        (hit.after[0], hit.after[0])
+    );
+    assert_eq!(EventKind::from_name("lift_off"), Some(EventKind::LiftOff));
+    let landing = shot.events[k + 2..]
+        .iter()
+        .find(|e| e.balls.contains(&0))
+        .unwrap();
+    assert_eq!(landing.kind, EventKind::Transition(Transition::Landing));
+    // One lift-off, the cue ball's: the red stays on the cloth.
+    let lifts = shot.events.iter().filter(|e| e.kind == EventKind::LiftOff);
+    assert_eq!(lifts.count(), 1);
+    // The audit sees a lift-off missing, and one too many.
+    let mut missing = shot.clone();
+    missing.events.remove(k + 1);
+    assert_eq!(snooker_engine::audit::flights(&missing).len(), 1);
+    let mut extra = shot.clone();
+    extra.events.insert(k + 2, lift.clone());
+    assert_eq!(snooker_engine::audit::flights(&extra).len(), 1);
+}

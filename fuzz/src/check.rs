@@ -52,11 +52,12 @@ impl SceneEnding {
 
 /// What a scene can reach, for the coverage table: every event kind, and the classes issue 21
 /// found an earlier generator never reached (by name in reports).
-pub const FEATURES: [&str; 18] = [
+pub const FEATURES: [&str; 19] = [
     "ball_ball",
     "ball_cushion",
     "ball_pocket",
     "ball_off_table",
+    "lift_off",
     "landing",
     "slide_to_roll",
     "slide_to_spin",

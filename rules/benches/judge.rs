@@ -1,5 +1,5 @@
 //! What judging a stroke costs next to simulating it (the break-building player judges
-//! thousands of candidate strokes per decision): `Frame::judge` on the break-off (legal, 131
+//! thousands of candidate strokes per decision): `Frame::judge` on the break-off (legal, 154
 //! events), on a foul that leaves the cue ball on the table (the snookered test from where it
 //! lies) and on a foul that leaves it in hand (the test from every point of the D on a 5 mm
 //! grid, stopping at the first point not snookered); the simulation of the break-off for scale.

@@ -717,7 +717,7 @@ fn log_events(rec: &RecordingStream, shot: &Shot) -> Result<(), RecordError> {
         TextLog::update_fields()
             .with_many_text(events.iter().map(|e| event_text(shot, e)))
             .with_many_level(events.iter().map(|e| match e.kind {
-                EventKind::Transition(_) => "DEBUG",
+                EventKind::Transition(_) | EventKind::LiftOff => "DEBUG",
                 _ => "INFO",
             }))
             .columns_of_unit_batches()
@@ -733,7 +733,7 @@ fn log_events(rec: &RecordingStream, shot: &Shot) -> Result<(), RecordError> {
             EventKind::BallCushion => ([255, 220, 0], 0.010),
             EventKind::BallPocket => ([255, 40, 40], 0.014),
             EventKind::BallOffTable => ([255, 120, 0], 0.014),
-            EventKind::Transition(_) => ([170, 170, 170], 0.005),
+            EventKind::Transition(_) | EventKind::LiftOff => ([170, 170, 170], 0.005),
         };
         (f32x3(place), rgb(c), size)
     };

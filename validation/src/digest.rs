@@ -210,7 +210,8 @@ impl ShotDigest {
                         slide_start: Velocities::from(&start.1),
                     });
                 }
-                EventKind::Transition(_) => {}
+                // A lift-off repeats the state its impact or landing left.
+                EventKind::Transition(_) | EventKind::LiftOff => {}
             }
         }
         let pockets: Vec<Option<String>> = (0..ids.len())

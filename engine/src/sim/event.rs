@@ -16,6 +16,10 @@ pub enum EventKind {
     BallPocket,
     /// A ball flew over a cushion and left the table.
     BallOffTable,
+    /// A ball left the cloth: an impact on the cloth sent it into the air. The impact's event
+    /// comes first, at the same instant; this one's `before` and `after` are both the ball's
+    /// state as it leaves (formats.md's `lift_off`).
+    LiftOff,
     /// A ball's motion law changed on its own.
     Transition(Transition),
 }
@@ -28,6 +32,7 @@ impl EventKind {
             EventKind::BallCushion => "ball_cushion",
             EventKind::BallPocket => "ball_pocket",
             EventKind::BallOffTable => "ball_off_table",
+            EventKind::LiftOff => "lift_off",
             EventKind::Transition(t) => t.name(),
         }
     }
@@ -39,6 +44,7 @@ impl EventKind {
             EventKind::BallCushion,
             EventKind::BallPocket,
             EventKind::BallOffTable,
+            EventKind::LiftOff,
         ]
         .into_iter()
         .chain(Transition::ALL.map(EventKind::Transition))

@@ -593,6 +593,13 @@ impl Sim<'_> {
             self.stats.refreshes += 1;
             return Ok(());
         }
+        // Balls this event sends off the cloth (a landing stays down: thesis §6.1.6).
+        let lifted: Vec<(usize, BallState)> = involved
+            .iter()
+            .zip(before.iter().zip(&after))
+            .filter(|(_, (b, a))| a.motion == Motion::Airborne && b.motion != Motion::Airborne)
+            .map(|(&i, (_, a))| (i, *a))
+            .collect();
         self.stats.events += 1;
         self.events.push(Event {
             t: self.now,
@@ -603,6 +610,18 @@ impl Sim<'_> {
             feature,
             normal_speed,
         });
+        for (i, s) in lifted {
+            self.stats.events += 1;
+            self.events.push(Event {
+                t: self.now,
+                kind: EventKind::LiftOff,
+                balls: vec![i],
+                after: vec![s],
+                before: vec![s],
+                feature: None,
+                normal_speed: None,
+            });
+        }
         Ok(())
     }
 }
