@@ -9,6 +9,7 @@ use crate::data::{MAX_NOISE, MAX_TRACK_COORD, MIN_NOISE, MIN_SIGMA};
 use crate::data::{MeasuredStrike, Moment, Quantity};
 use crate::data::{Measurement, Model, Nuisance, Observable, ShotData, TrackSample};
 use serde::Deserialize;
+use snooker_engine::motion::Transition;
 use snooker_engine::shown::Shown;
 use snooker_engine::{EventKind, Models, Params};
 use snooker_scene::{self as scene, Scene, SceneError};
@@ -260,8 +261,10 @@ fn moment(s: &str) -> Result<Moment, String> {
         ),
         None => (rest, 1),
     };
-    let kind =
-        EventKind::from_name(kind).ok_or_else(|| format!("`{kind}` is not an event kind"))?;
+    // `refresh` renews a law's accelerations and is never listed in a shot's events.
+    let kind = EventKind::from_name(kind)
+        .filter(|k| *k != EventKind::Transition(Transition::Refresh))
+        .ok_or_else(|| format!("`{kind}` is not an event kind"))?;
     match how {
         "after" => Ok(Moment::After { kind, n }),
         "rolling" => Ok(Moment::Rolling { kind, n }),
@@ -601,4 +604,24 @@ pub fn data_toml(comment: &str, scene: &str, tracks: &str, noise: f64, fit: &[St
         quoted.join(", ")
     );
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_moment_names_any_listed_event_kind_and_nothing_else() {
+        let after = |kind| Ok(Moment::After { kind, n: 2 });
+        assert_eq!(moment("after:lift_off#2"), after(EventKind::LiftOff));
+        assert_eq!(
+            moment("after:ball_off_table#2"),
+            after(EventKind::BallOffTable)
+        );
+        // A refresh is never listed in a shot: a moment after one would never come.
+        for bad in ["after:refresh#1", "after:lift-off", "rolling:nothing#1"] {
+            let e = moment(bad).unwrap_err();
+            assert!(e.contains("is not an event kind"), "{bad}: {e}");
+        }
+    }
 }

@@ -6,7 +6,7 @@
 use crate::data::{Measurement, Observable};
 use crate::residuals::observed_state;
 use serde::Serialize;
-use snooker_engine::{BallState, Motion, Shot};
+use snooker_engine::{BallState, EventKind, Motion, Shot};
 
 /// One sample compared: where the simulated ball was against where it was seen.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -145,14 +145,14 @@ fn last_heading(sim: &Shot, ball: usize, t: f64) -> Option<f64> {
 }
 
 /// The last event involving `ball` at or before `t`, as "kind #n" (n counts that kind for
-/// that ball).
+/// that ball); a `lift_off` is not one (a hop is after the impact that made it).
 fn since(sim: &Shot, ball: usize, t: f64) -> String {
     let mut counts = std::collections::HashMap::new();
     let mut last = "start".to_string();
     for e in sim
         .events
         .iter()
-        .filter(|e| e.t <= t && e.balls.contains(&ball))
+        .filter(|e| e.t <= t && e.balls.contains(&ball) && e.kind != EventKind::LiftOff)
     {
         let n = counts.entry(e.kind).or_insert(0usize);
         *n += 1;

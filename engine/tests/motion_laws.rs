@@ -216,6 +216,16 @@ fn a_hop_opens_with_a_lift_off_at_its_impact_and_closes_with_a_landing() {
     // One lift-off, the cue ball's: the red stays on the cloth.
     let lifts = shot.events.iter().filter(|e| e.kind == EventKind::LiftOff);
     assert_eq!(lifts.count(), 1);
+    // Listed, not resolved: the cap on events counts the impacts and transitions only.
+    assert_eq!(shot.stats.lift_offs, 1);
+    assert_eq!(shot.stats.events + 1, shot.events.len());
+    assert_eq!(shot.resolved_events(), shot.stats.events);
+    let cap = |n| SimOptions {
+        max_events: n,
+        ..SimOptions::default()
+    };
+    assert_eq!(simulate(&setup, &cap(shot.stats.events)).unwrap(), shot);
+    assert!(simulate(&setup, &cap(shot.stats.events - 1)).is_err());
     // The audit sees a lift-off missing, and one too many.
     let mut missing = shot.clone();
     missing.events.remove(k + 1);

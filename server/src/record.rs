@@ -24,7 +24,7 @@ pub trait Recorder: Send + Sync {
 pub fn rate(shot: &Shot, wanted: f64, limits: &Limits) -> Result<f64, ApiError> {
     let balls = shot.tracks.len().max(1) as f64;
     let per_ball = limits.recording_samples as f64 / balls;
-    let fixed = 2.0 + 2.0 * shot.events.len() as f64;
+    let fixed = 2.0 + 2.0 * shot.resolved_events() as f64;
     if fixed > per_ball {
         return Err(ApiError::unfinished(
             crate::input::SCENE,

@@ -209,10 +209,11 @@ pub fn encode_with_cuts(
     extra: impl FnOnce(&RecordingStream) -> Result<(), RecordError>,
 ) -> Result<Vec<u8>, RecordError> {
     opts.validate()?;
-    // Checked before anything is allocated: the grid, the end, two instants per event and
-    // per cut.
-    let instants =
-        (shot.duration * opts.rate).floor() + 2.0 + 2.0 * (shot.events.len() + cuts.len()) as f64;
+    // Checked before anything is allocated: the grid, the end, two instants per event resolved
+    // (a lift-off shares its impact's) and per cut.
+    let instants = (shot.duration * opts.rate).floor()
+        + 2.0
+        + 2.0 * (shot.resolved_events() + cuts.len()) as f64;
     let samples = instants * shot.tracks.len() as f64;
     if samples > MAX_BALL_SAMPLES as f64 {
         return Err(RecordError::TooLarge(samples as usize));

@@ -210,7 +210,7 @@ impl ShotDigest {
                         slide_start: Velocities::from(&start.1),
                     });
                 }
-                // A lift-off repeats the state its impact or landing left.
+                // A lift-off repeats the state its impact left.
                 EventKind::Transition(_) | EventKind::LiftOff => {}
             }
         }

@@ -611,7 +611,7 @@ impl Sim<'_> {
             normal_speed,
         });
         for (i, s) in lifted {
-            self.stats.events += 1;
+            self.stats.lift_offs += 1;
             self.events.push(Event {
                 t: self.now,
                 kind: EventKind::LiftOff,

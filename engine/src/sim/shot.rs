@@ -1,7 +1,7 @@
 //! The record of a simulated shot: its events and every ball's piecewise trajectory, which
 //! can be evaluated exactly at any time.
 
-use super::event::Event;
+use super::event::{Event, EventKind};
 use crate::ball::{Ball, BallKind, BallState};
 use crate::motion;
 use crate::params::Params;
@@ -49,8 +49,11 @@ pub enum Ending {
 /// Counters describing the work done.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Stats {
-    /// Events resolved.
+    /// Events resolved (the cap `max_events` counts these).
     pub events: usize,
+    /// `lift_off` events listed after the impacts that lifted a ball: in the shot's events,
+    /// not resolved on their own, so not counted in `events`.
+    pub lift_offs: usize,
     /// Candidates popped that were stale.
     pub stale: usize,
     /// Candidates computed.
@@ -78,6 +81,15 @@ pub struct Shot {
 }
 
 impl Shot {
+    /// The events resolved: all but the `lift_off`s, which stand at their impact's instant
+    /// (what bounds a recording's instants; `stats.events` for a shot simulated whole).
+    pub fn resolved_events(&self) -> usize {
+        self.events
+            .iter()
+            .filter(|e| e.kind != EventKind::LiftOff)
+            .count()
+    }
+
     /// Every ball's state at the end of the shot.
     pub fn final_states(&self) -> Vec<BallState> {
         self.tracks
