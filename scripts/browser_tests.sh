@@ -5,6 +5,7 @@
 # against `snooker serve` on a loopback port. Needs node and npm.
 #   scripts/browser_tests.sh                          # as the test command runs it
 #   scripts/browser_tests.sh --screenshots docs/img   # and writes the screenshots
+#   scripts/browser_tests.sh --prepare                # installs what it needs, runs nothing
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ ! -x /usr/bin/chromium ]; then
@@ -12,9 +13,12 @@ if [ ! -x /usr/bin/chromium ]; then
     $SUDO apt-get update -qq
     $SUDO apt-get install -y -qq --no-install-recommends chromium chromium-driver
 fi
+(cd server/browser && npm ci --no-audit --no-fund --silent)
+# `--prepare`: only the browser and playwright-core (the test command runs this beside the
+# build: it is mostly downloading).
+[ "${1:-}" = --prepare ] && exit 0
 bin="${CARGO_TARGET_DIR:-target}/ci/snooker"
 if [ ! -x "$bin" ]; then
     cargo build --profile ci --bin snooker
 fi
-(cd server/browser && npm ci --no-audit --no-fund --silent)
 SNOOKER_BIN="$(realpath "$bin")" node server/browser/lab.test.mjs "$@"

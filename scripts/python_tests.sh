@@ -7,6 +7,8 @@
 # against the command line built by
 # `cargo test --workspace --profile ci` (target/ci/snooker). The target directory is
 # $CARGO_TARGET_DIR when set, as cargo's.
+#   scripts/python_tests.sh             # as the test command runs it
+#   scripts/python_tests.sh --prepare   # the venv and its packages only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=$(realpath -m "${CARGO_TARGET_DIR:-target}")
@@ -17,6 +19,9 @@ venv=$target/py-venv
 # No pip cache: ray's and pyarrow's wheels are hundreds of MB, and the venv keeps them installed.
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check --no-cache-dir \
     pytest numpy pyarrow ray gymnasium
+# `--prepare`: only the venv and what it needs from PyPI (the test command runs this beside the
+# build: it is mostly downloading).
+[ "${1:-}" = --prepare ] && exit 0
 export CARGO_TARGET_DIR=$target PYO3_PYTHON=$venv/bin/python
 cargo fmt --manifest-path python/Cargo.toml -- --check
 # The `ci` profile (python/Cargo.toml), as `cargo test` used: the dependencies it built are

@@ -55,11 +55,27 @@ if [ -z "$font" ]; then
         echo "warning: no DejaVu Sans font and no apt-get: the plot tests will fail" >&2
     fi
 fi
+# What the browser and Python parts install (Debian's chromium, npm's playwright-core, a venv from
+# PyPI) is mostly downloading: it runs beside the build, its output in a log printed if it fails.
+prepare_log=${CARGO_TARGET_DIR:-target}/prepare.log
+mkdir -p "$(dirname "$prepare_log")"
+(scripts/browser_tests.sh --prepare && scripts/python_tests.sh --prepare) >"$prepare_log" 2>&1 &
+prepare=$!
+prepared() {
+    wait "$prepare" || {
+        cat "$prepare_log" >&2
+        echo "test.sh: installing what the browser and Python parts need failed" >&2
+        return 1
+    }
+}
 part format cargo fmt --all -- --check
 part lints cargo clippy --workspace --all-targets --profile ci -- -D warnings
 part tests cargo test --workspace --profile ci
 # The API documentation builds without a warning (broken or private links fail it).
-RUSTDOCFLAGS="-D warnings" part "API docs" cargo doc --workspace --no-deps --profile ci --quiet
+# With the examples: dependencies then resolve their features as for the lints (which include
+# dev-dependencies), so the lints' checked dependencies are reused, not checked again (50 s).
+RUSTDOCFLAGS="-D warnings" part "API docs" \
+    cargo doc --workspace --no-deps --profile ci --lib --bins --examples --quiet
 part book book
 # Random and hostile scenes through the scene parser and the engine, every invariant checked
 # (fuzz/): a fresh seed each run, printed; failing scenes go to fuzz-failures.toml. The binary
@@ -67,6 +83,7 @@ part book book
 # other features and build the engine, or rerun's dependencies, again; the results are the
 # same bits either way).
 part fuzz "${CARGO_TARGET_DIR:-target}/ci/snooker-fuzz" --scenes 10000
+part "waiting for the installs" prepared
 # The shot lab's page in a real browser (server/browser/): the binary `cargo test` built.
 part browser scripts/browser_tests.sh
 # The Python package (python/, built by maturin) and its tests, in a venv it makes itself.
