@@ -659,9 +659,21 @@ impl Gen<'_> {
             };
             let spin_scale = if self.chance(0.5) { 2.0 } else { 60.0 };
             let w = Vec3::new(self.u(-1.0, 1.0), self.u(-1.0, 1.0), self.u(-1.0, 1.0));
-            let w = w * (spin_scale / r).min(99.0 / r) / 3f64.sqrt();
+            let mut w = w * (spin_scale / r).min(99.0 / r) / 3f64.sqrt();
+            let (vx, vy) = (speed * a.cos(), speed * a.sin());
+            if vz == 0.0 && self.chance(0.1) {
+                // A stop shot's state: the backspin that leaves the ball at rest when its slip
+                // is used up (5/7 v + 2/7 R w x e_z = 0), with or without sidespin. Random
+                // spins never land within the engine's 1e-9 m/s of it, so without these the
+                // slide_to_stop and slide_to_spin transitions were never reached.
+                w.x = 2.5 * vy / r;
+                w.y = -2.5 * vx / r;
+                if self.chance(0.5) {
+                    w.z = 0.0;
+                }
+            }
             let b = &mut self.scene.balls[i];
-            b.vel = Some(Numbers([speed * a.cos(), speed * a.sin(), vz]));
+            b.vel = Some(Numbers([vx, vy, vz]));
             b.spin = Some(Numbers([w.x, w.y, w.z]));
         }
     }
