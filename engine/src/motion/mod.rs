@@ -142,12 +142,11 @@ impl Transition {
 
 /// State after `dt` seconds under the law of `s.motion` (dt is clamped to the law's duration).
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
-    let dt = dt.clamp(0.0, duration(s, p));
     match s.motion {
-        Motion::Sliding => sliding::state_at(s, dt, p),
-        Motion::Rolling => rolling::state_at(s, dt, p),
-        Motion::Spinning => spinning::state_at(s, dt, p),
-        Motion::Airborne => airborne::state_at(s, dt, p),
+        Motion::Sliding => sliding::state_at_clamped(s, dt, p),
+        Motion::Rolling => rolling::state_at_clamped(s, dt, p),
+        Motion::Spinning => spinning::state_at(s, dt.clamp(0.0, duration(s, p)), p),
+        Motion::Airborne => airborne::state_at(s, dt.clamp(0.0, duration(s, p)), p),
         Motion::Stationary | Motion::Pocketed | Motion::OffTable => *s,
     }
 }
@@ -173,6 +172,22 @@ pub fn path(s: &BallState, p: &Params) -> Path {
             Vec3::zeros()
         }
     };
+    path_with(s, acc)
+}
+
+/// [`duration`] and [`path`] together: the law is taken once (the event loop needs both at
+/// every law's start, with the cloth's effects on every few millimetres).
+pub fn duration_and_path(s: &BallState, p: &Params) -> (f64, Path) {
+    let (duration, acc) = match s.motion {
+        Motion::Sliding => sliding::duration_and_acceleration(s, p),
+        Motion::Rolling => rolling::duration_and_acceleration(s, p),
+        _ => return (duration(s, p), path(s, p)),
+    };
+    (duration, path_with(s, acc))
+}
+
+/// The position polynomial of `s` under acceleration `acc`.
+fn path_with(s: &BallState, acc: Vec3) -> Path {
     let vel = if s.motion.is_moving() {
         s.vel
     } else {

@@ -40,6 +40,13 @@ pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
     acceleration_along(law_direction(s, p), p)
 }
 
+/// [`duration`] and [`acceleration`] together, the law taken once (each law's start needs both).
+pub fn duration_and_acceleration(s: &BallState, p: &Params) -> (f64, Vec3) {
+    let d = law_direction(s, p);
+    let a = acceleration_along(d, p);
+    (held(end_along(s, d, a), p), a)
+}
+
 /// Time at which the velocity along `d` is used up under acceleration `a`.
 fn end_along(s: &BallState, d: Vec3, a: Vec3) -> f64 {
     let rate = -a.dot(&d);
@@ -59,7 +66,11 @@ fn natural_end(s: &BallState, p: &Params) -> f64 {
 /// How long this law holds: until the ball stops, |v0| / (mu_r g) (infinite without rolling
 /// resistance), or for at most one segment with the effects of [`cloth`] on.
 pub fn duration(s: &BallState, p: &Params) -> f64 {
-    let end = natural_end(s, p);
+    held(natural_end(s, p), p)
+}
+
+/// How long a law whose speed is used up at `end` holds ([`duration`]).
+fn held(end: f64, p: &Params) -> f64 {
     if cloth::active(p) {
         end.min(cloth::SEGMENT)
     } else {
@@ -74,7 +85,19 @@ pub fn ends_stopped(s: &BallState, p: &Params) -> bool {
 
 /// State after `dt` seconds of rolling (valid for 0 <= dt <= [`duration`]).
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
-    let a = acceleration(s, p);
+    evolve(s, acceleration(s, p), dt, p)
+}
+
+/// State after `dt` seconds clamped to `[0, duration]`: the law taken once for both (a track's
+/// samples and the event loop's current states come here).
+pub fn state_at_clamped(s: &BallState, dt: f64, p: &Params) -> BallState {
+    let d = law_direction(s, p);
+    let a = acceleration_along(d, p);
+    evolve(s, a, dt.clamp(0.0, held(end_along(s, d, a), p)), p)
+}
+
+/// State after `dt` seconds under the law's acceleration `a`.
+fn evolve(s: &BallState, a: Vec3, dt: f64, p: &Params) -> BallState {
     let mut out = *s;
     out.pos = s.pos + s.vel * dt + 0.5 * dt * dt * a;
     out.vel = s.vel + dt * a;

@@ -73,14 +73,24 @@ pub fn acceleration(s: &BallState, p: &Params) -> Vec3 {
     -l.mu * p.g * l.uhat + l.extra
 }
 
+/// [`duration`] and [`acceleration`] together, the law taken once (each law's start needs both).
+pub fn duration_and_acceleration(s: &BallState, p: &Params) -> (f64, Vec3) {
+    let l = law(s, p);
+    (held(&l, p), -l.mu * p.g * l.uhat + l.extra)
+}
+
 /// How long this law holds: until the slip is used up, 2|u0| / (7 mu_s g) (infinite on
 /// frictionless cloth), or for at most one segment with the effects of [`cloth`] on.
 pub fn duration(s: &BallState, p: &Params) -> f64 {
-    let end = law(s, p).natural_end;
+    held(&law(s, p), p)
+}
+
+/// How long law `l` holds ([`duration`]).
+fn held(l: &Law, p: &Params) -> f64 {
     if cloth::active(p) {
-        end.min(cloth::SEGMENT)
+        l.natural_end.min(cloth::SEGMENT)
     } else {
-        end
+        l.natural_end
     }
 }
 
@@ -92,7 +102,18 @@ pub fn ends_rolling(s: &BallState, p: &Params) -> bool {
 
 /// State after `dt` seconds of sliding (valid for 0 <= dt <= [`duration`]).
 pub fn state_at(s: &BallState, dt: f64, p: &Params) -> BallState {
+    evolve(s, &law(s, p), dt, p)
+}
+
+/// State after `dt` seconds clamped to `[0, duration]`: the law taken once for both (a track's
+/// samples and the event loop's current states come here).
+pub fn state_at_clamped(s: &BallState, dt: f64, p: &Params) -> BallState {
     let l = law(s, p);
+    evolve(s, &l, dt.clamp(0.0, held(&l, p)), p)
+}
+
+/// State after `dt` seconds under law `l` taken at `s`.
+fn evolve(s: &BallState, l: &Law, dt: f64, p: &Params) -> BallState {
     let (uhat, f) = (l.uhat, l.mu * p.g);
     let mut out = *s;
     out.pos = s.pos + s.vel * dt + 0.5 * dt * dt * (l.extra - f * uhat);

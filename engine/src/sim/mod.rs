@@ -64,11 +64,12 @@ struct Live {
 impl Live {
     /// Ball in `state` from `t_ref` on.
     fn new(state: BallState, t_ref: f64, generation: u64, p: &Params) -> Live {
+        let (duration, path) = motion::duration_and_path(&state, p);
         Live {
             state,
             t_ref,
-            law_end: t_ref + motion::duration(&state, p),
-            half_accel: motion::path(&state, p).a,
+            law_end: t_ref + duration,
+            half_accel: path.a,
             generation,
             path_memo: None,
         }
@@ -211,11 +212,12 @@ impl Sim<'_> {
         let p = *self.params();
         let path = self.law_path(i);
         let window = law_end.min(self.search_limit()) - self.now;
-        let table = &self.setup.table;
+        // The table outlives the borrow of `self`: candidates are pushed as they are met.
+        let setup = self.setup;
+        let table = &setup.table;
         // Where the ball can be before its law ends: features clearly away from it are not
         // searched.
         let reach = PlanBox::of(&path, window);
-        let mut found = Vec::new();
         if st.motion == Motion::Airborne {
             // In the air the nose is an edge at its height: met anywhere on the ball, or
             // cleared (thesis §6.2's geometry, off the cloth).
@@ -229,10 +231,10 @@ impl Sim<'_> {
                     continue;
                 }
                 if let Some(t) = cushion::nose_time_in_air(&path, c, edge, window) {
-                    found.push((t, Candidate::Nose { cushion: k }));
+                    self.push(self.now + t, Candidate::Nose { cushion: k }, i);
                 }
                 if let Some(t) = cushion::over_time(&path, c, edge, window) {
-                    found.push((t, Candidate::OverCushion { cushion: k }));
+                    self.push(self.now + t, Candidate::OverCushion { cushion: k }, i);
                 }
             }
             for (k, j) in table.jaws.iter().enumerate() {
@@ -240,10 +242,10 @@ impl Sim<'_> {
                     continue;
                 }
                 if let Some(t) = cushion::jaw_time_in_air(&path, j, edge, window) {
-                    found.push((t, Candidate::Jaw { jaw: k }));
+                    self.push(self.now + t, Candidate::Jaw { jaw: k }, i);
                 }
                 if let Some(t) = cushion::over_jaw_time(&path, j, edge, window) {
-                    found.push((t, Candidate::OverJaw { jaw: k }));
+                    self.push(self.now + t, Candidate::OverJaw { jaw: k }, i);
                 }
             }
             // Over a pocket's opening: drops in, or clears the pocket's back
@@ -256,7 +258,7 @@ impl Sim<'_> {
                 if over_fall
                     && let Some(t) = detect::pocket::drop_time_in_air(&path, pk, edge, window)
                 {
-                    found.push((t, Candidate::Pocket { pocket: k }));
+                    self.push(self.now + t, Candidate::Pocket { pocket: k }, i);
                 }
                 let far_edge = over_fall
                     .then(|| detect::pocket::far_edge_time(&path, pk, edge, window))
@@ -269,7 +271,7 @@ impl Sim<'_> {
                     } else {
                         Candidate::Pocket { pocket: k }
                     };
-                    found.push((t, kind));
+                    self.push(self.now + t, kind, i);
                 }
             }
         } else {
@@ -278,32 +280,29 @@ impl Sim<'_> {
                 if reach.near_segment(c.start, c.end, contact)
                     && let Some(t) = cushion::nose_time(&path, c, contact, window)
                 {
-                    found.push((t, Candidate::Nose { cushion: k }));
+                    self.push(self.now + t, Candidate::Nose { cushion: k }, i);
                 }
             }
             for (k, j) in table.jaws.iter().enumerate() {
                 if reach.near_point(j.centre, j.radius + contact)
                     && let Some(t) = cushion::jaw_time(&path, j, contact, window)
                 {
-                    found.push((t, Candidate::Jaw { jaw: k }));
+                    self.push(self.now + t, Candidate::Jaw { jaw: k }, i);
                 }
             }
             for (k, pk) in table.pockets.iter().enumerate() {
                 if reach.near_point(pk.centre, pk.radius)
                     && let Some(t) = detect::pocket::capture_time(&path, pk, window)
                 {
-                    found.push((t, Candidate::Pocket { pocket: k }));
+                    self.push(self.now + t, Candidate::Pocket { pocket: k }, i);
                 }
                 // Beside a deep pocket's fall, its back (detect/pocket.rs).
                 if reach.near_point(pk.mouth, pk.back_reach())
                     && let Some(t) = detect::pocket::back_time(&path, pk, window)
                 {
-                    found.push((t, Candidate::Pocket { pocket: k }));
+                    self.push(self.now + t, Candidate::Pocket { pocket: k }, i);
                 }
             }
-        }
-        for (t, kind) in found {
-            self.push(self.now + t, kind, i);
         }
     }
 
