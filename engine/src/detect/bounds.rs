@@ -51,6 +51,22 @@ impl PlanBox {
         PlanBox { lo, hi }
     }
 
+    /// The box from corner `lo` to corner `hi` (x, y).
+    pub fn new(lo: [f64; 2], hi: [f64; 2]) -> PlanBox {
+        PlanBox { lo, hi }
+    }
+
+    /// Whether the box is not empty (each low corner at or below the high one).
+    pub fn lo_below_hi(&self) -> bool {
+        (0..2).all(|k| self.lo[k] <= self.hi[k])
+    }
+
+    /// Whether `other` lies within this box. The tests below are monotone: a box within one
+    /// that no feature is near is near none either.
+    pub fn contains(&self, other: &PlanBox) -> bool {
+        (0..2).all(|k| self.lo[k] <= other.lo[k] && other.hi[k] <= self.hi[k])
+    }
+
     /// Whether some point of the box is within `dist` of the plan point `p`.
     pub fn near_point(&self, p: Vec3, dist: f64) -> bool {
         let gap = |k: usize, v: f64| (self.lo[k] - v).max(v - self.hi[k]).max(0.0);

@@ -19,7 +19,7 @@ use crate::detect::{self, bounds::PlanBox, cushion, cushion::NoseEdge};
 use crate::impact::{CushionContact, GRAZING_APPROACH, separation};
 use crate::motion;
 use crate::params::Params;
-use crate::table::{Cushion, Jaw};
+use crate::table::{Cushion, Jaw, Table};
 pub use error::SimError;
 pub use event::{Event, EventKind};
 use queue::{Candidate, Entry, Queue};
@@ -78,6 +78,8 @@ impl Live {
 
 struct Sim<'a> {
     setup: &'a Setup,
+    /// The table's quiet middle ([`quiet_box`]).
+    quiet: Option<PlanBox>,
     opts: SimOptions,
     balls: Vec<Live>,
     queue: Queue,
@@ -94,6 +96,7 @@ pub fn simulate(setup: &Setup, opts: &SimOptions) -> Result<Shot, SimError> {
     let p = &setup.params;
     let mut sim = Sim {
         setup,
+        quiet: quiet_box(&setup.table, p),
         opts: *opts,
         balls: Vec::with_capacity(setup.balls.len()),
         queue: Queue::default(),
@@ -126,6 +129,54 @@ pub fn simulate(setup: &Setup, opts: &SimOptions) -> Result<Shot, SimError> {
         ending,
         stats: sim.stats,
     })
+}
+
+/// A box of the table's middle that none of [`Sim::schedule_ball`]'s tests for the cushions,
+/// jaws and pockets sees, on the cloth or in the air: a ball whose reach lies within it is
+/// searched against none of them (each test is monotone, [`PlanBox::contains`], so this skips
+/// only searches that would find nothing: results are the same bits). The table's box of noses,
+/// inset until no test sees it; `None` without cushions or if no inset does.
+fn quiet_box(table: &Table, p: &Params) -> Option<PlanBox> {
+    let first = table.cushions.first()?;
+    let (mut lo, mut hi) = (
+        [first.start.x, first.start.y],
+        [first.start.x, first.start.y],
+    );
+    for c in &table.cushions {
+        for q in [c.start, c.end] {
+            lo = [lo[0].min(q.x), lo[1].min(q.y)];
+            hi = [hi[0].max(q.x), hi[1].max(q.y)];
+        }
+    }
+    // The margins of schedule_ball's tests: on the cloth and in the air.
+    let margins = [p.cushion_contact_distance(), p.ball_radius];
+    let sees = |b: &PlanBox| {
+        margins.iter().any(|&m| {
+            table
+                .cushions
+                .iter()
+                .any(|c| b.near_segment(c.start, c.end, m))
+                || table
+                    .jaws
+                    .iter()
+                    .any(|j| b.near_point(j.centre, j.radius + m))
+        }) || table
+            .pockets
+            .iter()
+            .any(|pk| b.near_point(pk.centre, pk.radius) || b.near_point(pk.mouth, pk.back_reach()))
+    };
+    let mut inset = 2.0 * p.ball_radius;
+    for _ in 0..12 {
+        let b = PlanBox::new(
+            [lo[0] + inset, lo[1] + inset],
+            [hi[0] - inset, hi[1] - inset],
+        );
+        if b.lo_below_hi() && !sees(&b) {
+            return Some(b);
+        }
+        inset *= 1.25;
+    }
+    None
 }
 
 impl Sim<'_> {
@@ -218,6 +269,9 @@ impl Sim<'_> {
         // Where the ball can be before its law ends: features clearly away from it are not
         // searched.
         let reach = PlanBox::of(&path, window);
+        if self.quiet.is_some_and(|q| q.contains(&reach)) {
+            return;
+        }
         if st.motion == Motion::Airborne {
             // In the air the nose is an edge at its height: met anywhere on the ball, or
             // cleared (thesis §6.2's geometry, off the cloth).
@@ -622,5 +676,35 @@ impl Sim<'_> {
             });
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::SnookerDims;
+
+    #[test]
+    fn the_quiet_middle_covers_most_of_the_snooker_bed_and_no_test_sees_it() {
+        let p = Params::default();
+        let table = Table::snooker(&SnookerDims::default());
+        let q = quiet_box(&table, &p).expect("a quiet middle");
+        // Most of the 3.569 x 1.778 m bed: searches are skipped there.
+        let inner = PlanBox::new([0.4, 0.35], [3.17, 1.43]);
+        assert!(q.contains(&inner), "{q:?}");
+        // Nothing of the table is within it: each test of schedule_ball is false.
+        let m = p.cushion_contact_distance().max(p.ball_radius);
+        for c in &table.cushions {
+            assert!(!q.near_segment(c.start, c.end, m), "{}", c.name);
+        }
+        for j in &table.jaws {
+            assert!(!q.near_point(j.centre, j.radius + m), "{}", j.name);
+        }
+        for pk in &table.pockets {
+            assert!(!q.near_point(pk.mouth, pk.back_reach()), "{}", pk.name);
+            assert!(!q.near_point(pk.centre, pk.radius), "{}", pk.name);
+        }
+        // The open table has no features: nothing to skip.
+        assert!(quiet_box(&Table::open(), &p).is_none());
     }
 }
