@@ -113,7 +113,8 @@ body = ("\n" + clean + "Why the cloth of each shot that did not finish was near-
         "`over_jaw`, `over_pocket_back`: a ball leaving the table there; `micro_collision`: an "
         "impact approaching at 2 mm/s or less; `steep_cue`: a strike at 60° or steeper; "
         "`offset_beyond_r_plus_r`: a strike with an offset coordinate beyond R + r, valid only "
-        "with a steep cue):\n\n")
+        "with a steep cue; `strike_cloth_friction`, where the run has it: a strike the cloth's "
+        "friction acted on, `mu_strike_cloth` set and the cue inclined):\n\n")
 page = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'robustness.md')
 s = open(page).read()
 i = s.index('<!-- fuzz-report -->') + len('<!-- fuzz-report -->')

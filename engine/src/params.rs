@@ -273,6 +273,11 @@ declare_params! {
     /// `cushion = "compliant"`.
     cushion_backing_damping: unit "s/m", default 0.0692, range ValidRange::closed(0.0, 10.0),
         source "Hunt and Crossley 1975; fitted to the thesis's 31 rebounds (§5.1.2)";
+    /// Ball-cloth friction during the cue strike ([`crate::cue::cloth`]): the cloth's friction
+    /// percussion under a cue inclined down. Off (0) by default, as the thesis neglects it
+    /// (§7.1.3: 2 % of the cue force at 6.5°); `mu_slide`'s 0.21 is the measured cloth.
+    mu_strike_cloth: unit "1", default 0.0, range ValidRange::closed(0.0, 1.0),
+        source "de la Torre Juarez 1994 (thesis §2.4.1.1; neglected in §7.1.3)";
 }
 
 /// The tip end mass that gives a squirt angle `angle` at side offset `b`

@@ -52,7 +52,7 @@ impl SceneEnding {
 
 /// What a scene can reach, for the coverage table: every event kind, and the classes issue 21
 /// found an earlier generator never reached (by name in reports).
-pub const FEATURES: [&str; 19] = [
+pub const FEATURES: [&str; 20] = [
     "ball_ball",
     "ball_cushion",
     "ball_pocket",
@@ -79,6 +79,8 @@ pub const FEATURES: [&str; 19] = [
     "steep_cue",
     // A strike whose offset has a coordinate beyond R + r (valid only with a steep cue).
     "offset_beyond_r_plus_r",
+    // A strike the cloth's friction acted on (`mu_strike_cloth` set, the cue inclined).
+    "strike_cloth_friction",
 ];
 
 /// The [`FEATURES`] `shot` of `scene` reached, as bits.
@@ -114,6 +116,9 @@ fn reached(scene: &snooker_scene::Scene, shot: &Shot) -> u32 {
             .any(|v| v.abs() > p.ball_radius + p.cue_tip_radius)
         {
             bits |= feature("offset_beyond_r_plus_r");
+        }
+        if s.strike.cloth_friction.norm() > 0.0 {
+            bits |= feature("strike_cloth_friction");
         }
     }
     bits & !(1 << 31)

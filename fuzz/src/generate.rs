@@ -529,7 +529,8 @@ impl Gen<'_> {
         }
     }
 
-    /// The cue's parameters (and the squirt's end mass) anywhere in their ranges.
+    /// The cue's parameters (the squirt's end mass, and the cloth's friction during the
+    /// strike) anywhere in their ranges.
     fn cue_parameters(&mut self) {
         let mut p = self.p;
         let mut set = std::mem::take(&mut self.scene.params.0);
@@ -539,6 +540,7 @@ impl Gen<'_> {
             "cue_tip_restitution",
             "cue_endmass",
             "miscue_limit",
+            "mu_strike_cloth",
         ] {
             if !self.chance(0.5) {
                 continue;
@@ -560,7 +562,9 @@ impl Gen<'_> {
         } else {
             self.scene.params = ParamOverrides(
                 set.into_iter()
-                    .filter(|(n, _)| !n.starts_with("cue_") && *n != "miscue_limit")
+                    .filter(|(n, _)| {
+                        !n.starts_with("cue_") && *n != "miscue_limit" && *n != "mu_strike_cloth"
+                    })
                     .collect(),
             );
         }

@@ -143,8 +143,9 @@ class OffTable(_Record):
 class StrikeReport(_Record):
     """The cue strike: the ``ball`` struck, ``cue_speed`` (m/s), the ``contact`` point relative
     to the centre (m), its ``contact_offset`` from the cue's axis (m), the ``squirt`` angle
-    (rad, + left of the heading), the ``speed_ratio`` (ball / cue) and the ball's state
-    ``after``."""
+    (rad, + left of the heading), the ``speed_ratio`` (ball / cue), the ball's state
+    ``after``, and the cloth's friction impulse during the strike, ``cloth_friction`` (N s;
+    None unless the ``mu_strike_cloth`` parameter gave one)."""
 
     ball: str
     cue_speed: float
@@ -153,6 +154,7 @@ class StrikeReport(_Record):
     squirt: float
     speed_ratio: float
     after: BallState
+    cloth_friction: Optional[Vec3] = _optional()
 
     @classmethod
     def from_dict(cls, d: dict) -> "StrikeReport":
@@ -165,6 +167,7 @@ class StrikeReport(_Record):
             d["squirt"],
             d["speed_ratio"],
             BallState.from_dict(d["after"]),
+            tuple(d["cloth_friction"]) if "cloth_friction" in d else None,
         )
 
 

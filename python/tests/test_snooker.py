@@ -42,6 +42,28 @@ def test_every_scene_equals_the_cli_to_the_bit(path):
     assert [e.to_dict() for e in got.events] == want["events"]
 
 
+def test_the_cloth_s_friction_during_a_steep_strike_reads_as_the_cli_writes_it(tmp_path):
+    # mu_strike_cloth (physics.md, "Cue strike"): the strike's cloth_friction is written only
+    # when the cloth's friction acted, and reads back key for key.
+    scene = tmp_path / "masse.toml"
+    scene.write_text(
+        "name = 'masse'\n[params]\nmu_strike_cloth = 0.21\n"
+        "[[balls]]\nid = 'cue'\npos = [1.0, 0.9]\n"
+        "[cue]\nball = 'cue'\nspeed = 3.0\naim = 0.0\noffset = [0.008, 0.0]\nelevation = 1.2\n"
+    )
+    out = cli("simulate", str(scene), "--quiet", "--json", "-")
+    assert out.returncode == 0, out.stderr
+    want = json.loads(out.stdout)
+    got = snooker.simulate(scene).result
+    assert got.to_dict() == want
+    friction = got.strike.cloth_friction
+    assert friction is not None and math.hypot(*friction) > 0.0
+    assert got.params["mu_strike_cloth"] == 0.21
+    # The level cue: no friction, no key.
+    level = snooker.simulate(TWO_BALLS).result
+    assert level.strike.cloth_friction is None and "cloth_friction" not in level.to_dict()["strike"]
+
+
 def test_many_at_once_equal_one_by_one_on_any_thread_count():
     scenes = [str(p) for p in SCENES] + [TWO_BALLS]
     one_by_one = [snooker.simulate(s).result for s in scenes]

@@ -164,6 +164,10 @@ pub struct StrikeRecord {
     pub speed_ratio: f64,
     /// The ball's state just after the strike.
     pub after: BallRecord,
+    /// The cloth's friction impulse during the strike, N s (an extension: written only when
+    /// `mu_strike_cloth` made one; physics.md, "Cue strike").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cloth_friction: Option<[f64; 3]>,
 }
 
 /// The result document (formats.md "Result", extended): what `snooker simulate --json`
@@ -276,6 +280,10 @@ pub fn result_record(scene: &Scene, shot: &Shot) -> ShotRecord {
             squirt: s.squirt,
             speed_ratio: s.speed_ratio,
             after: (&s.state).into(),
+            cloth_friction: (s.cloth_friction.norm() > 0.0).then(|| {
+                let f = s.cloth_friction;
+                [f.x, f.y, f.z]
+            }),
         }
     });
     ShotRecord {

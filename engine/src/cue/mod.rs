@@ -14,10 +14,14 @@
 //! the cue (mass `cue_mass`) with the ball's effective mass at the contact point, with the tip's
 //! restitution (fitted to the measured 1.45 speed ratio, thesis §5.1.4). The cloth takes the
 //! downward part of the impulse through the ball's bottom point (no moment) and its friction
-//! percussion is neglected, as in the thesis (about 2% of the cue force at 6.5 deg).
+//! percussion is neglected, as in the thesis (about 2% of the cue force at 6.5 deg), unless
+//! `mu_strike_cloth` is set: then the cloth's friction acts during the strike ([`cloth`],
+//! de la Torre Juarez 1994).
 //! Squirt: the tip's transverse end mass lets the ball leave off the axis, away from the side
 //! struck (Shepard 1997, Cross 2008): tan(squirt) = 2.5 s c / (1 + 2.5 c^2 + M / m_e), with
 //! s = b/R the contact's side offset and c = sqrt(1 - s^2).
+
+pub mod cloth;
 
 use crate::ball::{Ball, BallState, INV_INERTIA_FACTOR, Vec3};
 use crate::motion;
@@ -60,6 +64,9 @@ pub struct Strike {
     pub squirt: f64,
     /// Horizontal speed given to the ball / cue speed.
     pub speed_ratio: f64,
+    /// The cloth's friction impulse during the strike, N s (horizontal; zero unless
+    /// `mu_strike_cloth` is set and the cue is inclined: [`cloth`]).
+    pub cloth_friction: Vec3,
 }
 
 /// Why a strike cannot be played.
@@ -233,6 +240,11 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
     let mut out = *ball;
     out.vel += Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
     out.spin += contact.cross(&impulse) / inertia;
+    // The cloth's normal impulse is the downward part of the cue's.
+    let friction = cloth::percussion(ball, &out, -impulse.z, p);
+    if let Some(f) = friction {
+        out = cloth::apply(&out, f, p);
+    }
     // The strike's result must be a ball the engine takes (a heavy cue at the top speed
     // gives more): blamed on the cue speed, the input that made it.
     let (speed, surface) = (out.vel.norm(), out.spin.norm() * r);
@@ -247,7 +259,10 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
         ));
     }
     let out = motion::settle(out, p);
-    let dv = Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
+    let mut dv = Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
+    if let Some(f) = friction {
+        dv += f / p.ball_mass;
+    }
     let squirt = heading.cross(&dv).z.atan2(heading.dot(&dv));
     Ok(Strike {
         state: out,
@@ -255,6 +270,7 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
         contact_offset,
         squirt,
         speed_ratio: dv.norm() / cue.speed,
+        cloth_friction: friction.unwrap_or_else(Vec3::zeros),
     })
 }
 
