@@ -248,6 +248,31 @@ mod tests {
     }
 
     #[test]
+    fn extreme_sizes_give_finite_slips_within_the_friction_s_reach() {
+        // A cue speed may be as small as a user likes: the cue's slip subnormal beside a
+        // sliding ball's, or the other way round, and friction far beyond either.
+        let sizes = [5e-324, 1e-310, 1e-300, 1e-12, 1.0, 1e3, 1e150];
+        for &ua in &sizes {
+            for &aa in &sizes {
+                for &k in &sizes {
+                    let (u0, a) = (
+                        Vec3::new(0.6 * ua, -0.8 * ua, 0.0),
+                        Vec3::new(aa, 0.3 * aa, 0.0),
+                    );
+                    let u1 = final_slip(u0, a, k);
+                    assert!(u1.iter().all(|x| x.is_finite()), "{ua} {aa} {k}: {u1:?}");
+                    // The friction's impulse, u1 - u0 - a, is at most k (rounding aside).
+                    let f = (u1 - u0 - a).norm();
+                    assert!(
+                        f <= k * (1.0 + 1e-9) + 1e-9 * (ua + aa),
+                        "{ua} {aa} {k}: {f}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
     fn a_ball_struck_from_rest_keeps_the_direction_of_the_cue_s_slip() {
         let a = Vec3::new(0.6, -0.8, 0.0);
         assert_eq!(final_slip(Vec3::zeros(), a, 0.5), a * 0.5);
