@@ -114,7 +114,9 @@ body = ("\n" + clean + "Why the cloth of each shot that did not finish was near-
         "impact approaching at 2 mm/s or less; `steep_cue`: a strike at 60° or steeper; "
         "`offset_beyond_r_plus_r`: a strike with an offset coordinate beyond R + r, valid only "
         "with a steep cue; `strike_cloth_friction`, where the run has it: a strike the cloth's "
-        "friction acted on, `mu_strike_cloth` set and the cue inclined):\n\n")
+        "friction acted on, `mu_strike_cloth` set and the cue inclined; `strike_jump` and `bounce`, "
+        "where the run has them: a strike that made the ball jump and a landing that bounced, "
+        "`e_bed` set):\n\n")
 page = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'robustness.md')
 s = open(page).read()
 i = s.index('<!-- fuzz-report -->') + len('<!-- fuzz-report -->')

@@ -503,3 +503,34 @@ fn the_recordings_call_of_a_stroke_names_the_colours_put_back() {
     let last = calls.last().unwrap().1[0].as_str();
     assert!(last.contains("potted black; respotted black"), "{last}");
 }
+
+#[test]
+fn a_jump_shot_is_named_and_its_bounces_are_listed() {
+    // formats.md, extended: a `[params] e_bed` frame whose steep strike jumps over a red gives
+    // the foul `jump_shot`; each bounce is a `landing` whose `after` is in the air, followed
+    // at the same `t` by the ball's `lift_off`.
+    let dir = temp_dir("referee-jump");
+    let out = dir.join("r.json");
+    let frame = format!("{FRAMES}/jump_shot.toml");
+    ok(&["referee", &frame, "--json", out.to_str().unwrap()]);
+    let r = json(&out);
+    assert_eq!(r["legal"], false);
+    assert_eq!(r["foul"]["reason"], "jump_shot");
+    assert_eq!(r["foul"]["reasons"], serde_json::json!(["jump_shot"]));
+    assert_eq!(r["foul"]["points"], 4);
+    assert_eq!(r["first_hit"], "red2");
+    let events = r["shot"]["events"].as_array().unwrap();
+    let bounces: Vec<usize> = (0..events.len())
+        .filter(|&k| {
+            events[k]["kind"] == "landing" && events[k]["after"]["cue"]["motion"] == "airborne"
+        })
+        .collect();
+    assert!(bounces.len() >= 2, "{events:?}");
+    for k in bounces {
+        assert_eq!(events[k + 1]["kind"], "lift_off");
+        assert_eq!(events[k + 1]["t"], events[k]["t"]);
+        assert_eq!(events[k + 1]["balls"], serde_json::json!(["cue"]));
+    }
+    assert_eq!(r["shot"]["params"]["e_bed"], 0.5);
+    assert_eq!(r["shot"]["strike"]["after"]["motion"], "airborne");
+}

@@ -10,6 +10,7 @@ use crate::ball::{BallState, Motion};
 use crate::detect::{SKIN, TOUCH_TOL, VERIFY_TOL};
 use crate::impact::impulse::TOLERANCE;
 use crate::impact::separation::{MIN_SEPARATION, RESTING_APPROACH};
+use crate::motion::Transition;
 use crate::motion::cloth::SEGMENT;
 use crate::params::Params;
 use crate::sim::{Ending, Event, EventKind, Setup, Shot};
@@ -596,8 +597,10 @@ pub fn flights(shot: &Shot) -> Vec<Violation> {
             }
             continue;
         }
+        // A landing that bounces (`e_bed`) opens a flight too.
+        let bounce = e.kind == EventKind::Transition(Transition::Landing);
         for ((&b, s0), s1) in e.balls.iter().zip(&e.before).zip(&e.after) {
-            if s0.motion != Motion::Airborne && s1.motion == Motion::Airborne {
+            if s1.motion == Motion::Airborne && (bounce || s0.motion != Motion::Airborne) {
                 pending.push(b);
             }
         }

@@ -278,6 +278,13 @@ declare_params! {
     /// (§7.1.3: 2 % of the cue force at 6.5°); `mu_slide`'s 0.21 is the measured cloth.
     mu_strike_cloth: unit "1", default 0.0, range ValidRange::closed(0.0, 1.0),
         source "de la Torre Juarez 1994 (thesis §2.4.1.1; neglected in §7.1.3)";
+    /// Ball-bed restitution (the cloth on the slate), Newton's: the share of its downward
+    /// speed a ball the bed stops gets back upwards, at a landing and under a cue inclined
+    /// down (then the ball jumps: [`crate::motion::bed`]). Off (0) by default: the thesis's
+    /// cloth takes a landing's vertical velocity (§6.1.6) and the cue's downward impulse
+    /// (§7.1.3). At most 0.9, so that a ball's bounces die out in a few dozen.
+    e_bed: unit "1", default 0.0, range ValidRange::closed(0.0, 0.9),
+        source "Newton's restitution on the bed (thesis §6.1.6 and §7.1.3 take 0: no bounce)";
 }
 
 /// The tip end mass that gives a squirt angle `angle` at side offset `b`

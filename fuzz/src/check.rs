@@ -4,6 +4,7 @@
 use crate::generate::{Generated, Kind, unphysical_cloth};
 use snooker_engine::audit::{self, MAX_OVERLAP};
 use snooker_engine::impact::separation;
+use snooker_engine::motion::Transition;
 use snooker_engine::{EventKind, Motion, Shot, SimError, SimOptions, simulate};
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -52,7 +53,7 @@ impl SceneEnding {
 
 /// What a scene can reach, for the coverage table: every event kind, and the classes issue 21
 /// found an earlier generator never reached (by name in reports).
-pub const FEATURES: [&str; 20] = [
+pub const FEATURES: [&str; 22] = [
     "ball_ball",
     "ball_cushion",
     "ball_pocket",
@@ -81,6 +82,10 @@ pub const FEATURES: [&str; 20] = [
     "offset_beyond_r_plus_r",
     // A strike the cloth's friction acted on (`mu_strike_cloth` set, the cue inclined).
     "strike_cloth_friction",
+    // A strike that made the ball jump (`e_bed` set, the cue inclined).
+    "strike_jump",
+    // A landing that bounced (`e_bed` set).
+    "bounce",
 ];
 
 /// The [`FEATURES`] `shot` of `scene` reached, as bits.
@@ -96,6 +101,11 @@ fn reached(scene: &snooker_scene::Scene, shot: &Shot) -> u32 {
             EventKind::BallPocket if from_air => feature("pot_from_air"),
             EventKind::BallOffTable if name.ends_with(" jaw") => feature("over_jaw"),
             EventKind::BallOffTable if name.ends_with("/back") => feature("over_pocket_back"),
+            EventKind::Transition(Transition::Landing)
+                if e.after.iter().any(|s| s.motion == Motion::Airborne) =>
+            {
+                feature("bounce")
+            }
             EventKind::BallBall
                 if e.normal_speed
                     .is_some_and(|v| v <= separation::RESTING_APPROACH) =>
@@ -119,6 +129,9 @@ fn reached(scene: &snooker_scene::Scene, shot: &Shot) -> u32 {
         }
         if s.strike.cloth_friction.norm() > 0.0 {
             bits |= feature("strike_cloth_friction");
+        }
+        if s.strike.state.motion == Motion::Airborne {
+            bits |= feature("strike_jump");
         }
     }
     bits & !(1 << 31)

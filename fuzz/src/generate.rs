@@ -529,8 +529,9 @@ impl Gen<'_> {
         }
     }
 
-    /// The cue's parameters (the squirt's end mass, and the cloth's friction during the
-    /// strike) anywhere in their ranges.
+    /// The cue's parameters (the squirt's end mass, the cloth's friction during the strike,
+    /// and the bed's restitution that makes an inclined cue's ball jump) anywhere in their
+    /// ranges.
     fn cue_parameters(&mut self) {
         let mut p = self.p;
         let mut set = std::mem::take(&mut self.scene.params.0);
@@ -541,6 +542,7 @@ impl Gen<'_> {
             "cue_endmass",
             "miscue_limit",
             "mu_strike_cloth",
+            "e_bed",
         ] {
             if !self.chance(0.5) {
                 continue;
@@ -563,7 +565,8 @@ impl Gen<'_> {
             self.scene.params = ParamOverrides(
                 set.into_iter()
                     .filter(|(n, _)| {
-                        !n.starts_with("cue_") && *n != "miscue_limit" && *n != "mu_strike_cloth"
+                        !n.starts_with("cue_")
+                            && !matches!(*n, "miscue_limit" | "mu_strike_cloth" | "e_bed")
                     })
                     .collect(),
             );

@@ -27,16 +27,19 @@ pub enum FoulReason {
     TwoColoursPotted,
     /// After a free ball stroke, the cue ball is snookered on every ball on by the free ball
     /// (Section 3 Rule 12(b)(ii); not when the pink and black are the only object balls). An
-    /// extension of the contract's list, last so that its reasons keep their order.
+    /// extension of the contract's list, after its seven so that theirs keep their order.
     SnookeredByFreeBall,
     /// A ball the cue ball touched as the stroke began was moved by it: a push stroke
-    /// (Section 3 Rule 8(b) "Touching Ball"; Rule 10). An extension, last in the order.
+    /// (Section 3 Rule 8(b) "Touching Ball"; Rule 10). An extension, after the free ball's.
     PushStroke,
+    /// The cue ball passed over an object ball ([`crate::jump`]; Section 2 Rule 20 "Jump
+    /// Shot", Section 3 Rule 10). An extension, last in the order.
+    JumpShot,
 }
 
 impl FoulReason {
     /// Every reason, in the contract's order.
-    pub const ALL: [FoulReason; 9] = [
+    pub const ALL: [FoulReason; 10] = [
         FoulReason::NoBallHit,
         FoulReason::FirstHitNotOn,
         FoulReason::BallNotOnPotted,
@@ -46,6 +49,7 @@ impl FoulReason {
         FoulReason::TwoColoursPotted,
         FoulReason::SnookeredByFreeBall,
         FoulReason::PushStroke,
+        FoulReason::JumpShot,
     ];
 
     /// Its name in the referee's JSON.
@@ -60,6 +64,7 @@ impl FoulReason {
             FoulReason::TwoColoursPotted => "two_colours_potted",
             FoulReason::SnookeredByFreeBall => "snookered_by_free_ball",
             FoulReason::PushStroke => "push_stroke",
+            FoulReason::JumpShot => "jump_shot",
         }
     }
 }
@@ -119,7 +124,8 @@ mod tests {
                 "wrong_colour_potted",
                 "two_colours_potted",
                 "snookered_by_free_ball",
-                "push_stroke"
+                "push_stroke",
+                "jump_shot"
             ]
         );
         assert!(FoulReason::ALL.windows(2).all(|w| w[0] < w[1]));

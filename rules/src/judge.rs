@@ -7,6 +7,7 @@ use crate::colour::{self, Colour};
 use crate::error::JudgeError;
 use crate::foul::{self, Foul, FoulReason};
 use crate::frame::Frame;
+use crate::jump;
 use crate::respot::{self, Respot};
 use crate::snookered;
 use crate::state::{FrameState, On, opponent};
@@ -18,6 +19,8 @@ pub const SIMULTANEOUS: f64 = 1e-9;
 
 /// What the shot did, as the rules see it: the balls first hit, pots and balls off the table.
 struct Happened {
+    /// When the cue ball first met a ball.
+    t_first: Option<f64>,
     first: Vec<usize>,
     potted: Vec<usize>,
     off: Vec<usize>,
@@ -43,7 +46,12 @@ fn happened(shot: &Shot, cue: usize) -> Happened {
             _ => {}
         }
     }
-    Happened { first, potted, off }
+    Happened {
+        t_first: t0,
+        first,
+        potted,
+        off,
+    }
 }
 
 /// True when the cue ball meets ball `ball` as the stroke starts (within [`SIMULTANEOUS`] of
@@ -147,6 +155,9 @@ impl Frame {
         }
         if pushed {
             reasons.push(FoulReason::PushStroke);
+        }
+        if jump::jump_shot(shot, cue, h.t_first.map(|t| (t, h.first.as_slice()))) {
+            reasons.push(FoulReason::JumpShot);
         }
         let foul = reasons.first().map(|&reason| Foul {
             reason,

@@ -30,6 +30,7 @@ pub mod foul;
 pub mod frame;
 pub mod in_hand;
 pub mod judge;
+pub mod jump;
 pub mod layout;
 pub mod play;
 pub mod report;

@@ -185,6 +185,29 @@ fn a_power_stroke_can_send_the_cue_ball_off_the_table() {
 }
 
 #[test]
+fn a_cue_ball_passing_over_a_ball_is_a_jump_shot() {
+    // Over a ball before the first contact: a foul though the first ball hit (red2) is on.
+    let (f, v) = play("jump_shot");
+    assert_eq!(v.first_hit.as_deref(), Some("red2"));
+    assert_eq!(foul(&v), (FoulReason::JumpShot, 4));
+    assert_eq!(v.foul.as_ref().unwrap().reasons, [FoulReason::JumpShot]);
+    assert_eq!(v.scores, [0, 4]);
+    assert_eq!(next(&f, &v).state().to_play, 1);
+    // Over the ball it struck, touching it on the way: still a jump shot.
+    let (_, v) = play("jump_over_ball_struck");
+    assert_eq!(v.first_hit.as_deref(), Some("red1"));
+    assert_eq!(foul(&v), (FoulReason::JumpShot, 4));
+    // Struck from above and landing short of its far side: no jump shot (Rule 20(b)).
+    let (_, v) = play("jump_strikes_not_over");
+    assert_eq!(v.first_hit.as_deref(), Some("red1"));
+    assert!(v.legal(), "{:?}", v.foul);
+    // The same stroke on the thesis's bed does not leave the cloth: legal, red1 first.
+    let (_, v) = play("jump_bed_off");
+    assert_eq!(v.first_hit.as_deref(), Some("red1"));
+    assert!(v.legal(), "{:?}", v.foul);
+}
+
+#[test]
 fn another_colour_potted_with_a_colour_on_is_wrong_colour_potted() {
     let (f, v) = play("wrong_colour_potted");
     assert_eq!(v.first_hit.as_deref(), Some("pink"));

@@ -16,7 +16,9 @@
 //! downward part of the impulse through the ball's bottom point (no moment) and its friction
 //! percussion is neglected, as in the thesis (about 2% of the cue force at 6.5 deg), unless
 //! `mu_strike_cloth` is set: then the cloth's friction acts during the strike ([`cloth`],
-//! de la Torre Juarez 1994).
+//! de la Torre Juarez 1994). The bed stops the ball's downward motion; with the bed's
+//! restitution `e_bed` set it gives e_bed of it back upwards and the ball jumps
+//! ([`crate::motion::bed`]; off by default, as in the thesis).
 //! Squirt: the tip's transverse end mass lets the ball leave off the axis, away from the side
 //! struck (Shepard 1997, Cross 2008): tan(squirt) = 2.5 s c / (1 + 2.5 c^2 + M / m_e), with
 //! s = b/R the contact's side offset and c = sqrt(1 - s^2).
@@ -241,9 +243,20 @@ pub fn strike(ball: &BallState, cue: &Cue, p: &Params) -> Result<Strike, CueErro
     out.vel += Vec3::new(impulse.x, impulse.y, 0.0) / p.ball_mass;
     out.spin += contact.cross(&impulse) / inertia;
     // The cloth's normal impulse is the downward part of the cue's.
-    let friction = cloth::percussion(ball, &out, -impulse.z, p);
+    let normal = -impulse.z;
+    let mut friction = cloth::percussion(ball, &out, normal, p);
     if let Some(f) = friction {
         out = cloth::apply(&out, f, p);
+    }
+    // The bed gives back e_bed of what it stopped (motion/bed.rs): the ball jumps, and the
+    // cloth's friction acts on through that impulse too, the cue's part done (a = 0).
+    let jump = motion::bed::rebound(normal.max(0.0) / p.ball_mass, p);
+    if jump > 0.0 {
+        out.vel.z = jump;
+        if let Some(f) = cloth::percussion(&out, &out, p.ball_mass * jump, p) {
+            out = cloth::apply(&out, f, p);
+            friction = Some(friction.unwrap_or_else(Vec3::zeros) + f);
+        }
     }
     // The strike's result must be a ball the engine takes (a heavy cue at the top speed
     // gives more): blamed on the cue speed, the input that made it.

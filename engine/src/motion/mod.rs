@@ -2,6 +2,7 @@
 //! any time, its position polynomial and the time at which it ends.
 
 pub mod airborne;
+pub mod bed;
 pub mod cloth;
 pub mod rolling;
 pub mod sliding;
@@ -105,7 +106,8 @@ pub enum Transition {
     RollToStop,
     /// Sidespin of a resting ball decayed to zero.
     SpinToStop,
-    /// An airborne ball came back down onto the cloth.
+    /// An airborne ball came back down onto the cloth (and, with the bed's restitution
+    /// `e_bed`, bounced: it leaves the bed again at once, [`bed`]).
     Landing,
     /// A segment of a law with the effects of [`cloth`] on ended and the law's accelerations
     /// were renewed; the motion phase is unchanged. Not reported as an event.
@@ -255,10 +257,16 @@ pub fn finish(start: &BallState, end: &BallState, p: &Params) -> Option<(Transit
         }
         Motion::Airborne => {
             // Thesis §6.1.6: the cloth's vertical percussion stops the fall; its friction
-            // percussion (mu_s times a small impulse) is neglected.
+            // percussion (mu_s times a small impulse) is neglected. With `e_bed` the bed gives
+            // back part of the fall ([`bed`]): the ball bounces, still in the air.
             s.pos.z = p.ball_radius;
-            s.vel.z = 0.0;
-            s = settle_on_cloth(s, p);
+            let up = bed::rebound(-s.vel.z, p);
+            if up > 0.0 {
+                s.vel.z = up;
+            } else {
+                s.vel.z = 0.0;
+                s = settle_on_cloth(s, p);
+            }
             Transition::Landing
         }
         Motion::Stationary | Motion::Pocketed | Motion::OffTable => return None,

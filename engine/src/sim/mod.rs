@@ -646,11 +646,15 @@ impl Sim<'_> {
             self.stats.refreshes += 1;
             return Ok(());
         }
-        // Balls this event sends off the cloth (a landing stays down: thesis §6.1.6).
+        // Balls this event sends off the cloth: from the cloth into the air, or off the bed
+        // again at a landing that bounces (`e_bed`; the thesis's landing stays down, §6.1.6).
+        let bounce = kind == EventKind::Transition(motion::Transition::Landing);
         let lifted: Vec<(usize, BallState)> = involved
             .iter()
             .zip(before.iter().zip(&after))
-            .filter(|(_, (b, a))| a.motion == Motion::Airborne && b.motion != Motion::Airborne)
+            .filter(|(_, (b, a))| {
+                a.motion == Motion::Airborne && (bounce || b.motion != Motion::Airborne)
+            })
             .map(|(&i, (_, a))| (i, *a))
             .collect();
         self.stats.events += 1;

@@ -1,0 +1,88 @@
+//! The jump shot (WPBSA Section 2 Rule 20 "Jump Shot"; a foul by Section 3 Rule 10): the cue
+//! ball passes over any part of an object ball, touching it or not, except (a) over another
+//! ball after it first struck one, (b) when it jumps and strikes a ball but does not land on
+//! that ball's far side, (c) over the ball it struck after a cushion or another ball. In the
+//! engine a cue ball leaves the cloth from a steep strike with the bed's restitution set
+//! (`e_bed`, off by default), off a ball or off a cushion.
+//!
+//! Judged on the cue ball's flights, sampled every [`STEP`] of its way: before its first
+//! contact with a ball, it is over a ball when their centres are less than 2R apart in plan
+//! and the balls do not touch (it can only be above it); after that contact, over the ball it
+//! struck only while still in the flight that struck it, before it meets anything else (c),
+//! and beyond that ball's centre along its approach (b: the far side); over other balls then
+//! no longer counts (a).
+
+use snooker_engine::{BallState, Motion, Shot, Vec3};
+
+/// The cue ball's way between the samples of a flight, m: a fortieth of a ball's diameter.
+pub const STEP: f64 = 1e-3;
+/// The most samples of one flight (a flight's plan way is a few metres at most).
+const MAX_SAMPLES: usize = 20_000;
+/// Two balls closer than 2R + this, m, touch (the engine's contact tolerance is 1 nm).
+const TOUCH: f64 = 1e-6;
+
+/// True when the cue ball (`cue`, an index of `shot`'s tracks) made a jump shot; `first` is
+/// the time of its first contact with a ball and the balls it met then (none: no ball hit).
+pub fn jump_shot(shot: &Shot, cue: usize, first: Option<(f64, &[usize])>) -> bool {
+    let p = &shot.params;
+    let r = p.ball_radius;
+    let track = &shot.tracks[cue];
+    let t_first = first.map_or(f64::INFINITY, |f| f.0);
+    let struck: &[usize] = first.map_or(&[], |f| f.1);
+    let segments = &track.segments;
+    for (k, seg) in segments.iter().enumerate() {
+        if seg.state.motion != Motion::Airborne || seg.t > t_first {
+            continue;
+        }
+        let end = segments.get(k + 1).map_or(shot.duration, |s| s.t);
+        // Before the first contact: over any ball, but in the flight that strikes, over the
+        // balls struck (coming down onto one is judged by (b) below).
+        let approach: &[usize] = if end >= t_first { struck } else { &[] };
+        let over_any = samples(seg.t, end.min(t_first), &seg.state).any(|t| {
+            let c = track.state_at(t, p);
+            (0..shot.tracks.len())
+                .filter(|&j| j != cue && !approach.contains(&j))
+                .any(|j| above(&c, &shot.tracks[j].state_at(t, p), r, None))
+        });
+        if over_any {
+            return true;
+        }
+        // The flight that struck: over a ball it struck and past its centre, before the cue
+        // ball's next event (the segment's end).
+        if seg.t <= t_first && t_first < end {
+            let c0 = track.state_at(t_first, p);
+            let approach = Vec3::new(c0.vel.x, c0.vel.y, 0.0);
+            let past = samples(t_first, end, &seg.state).any(|t| {
+                let c = track.state_at(t, p);
+                struck
+                    .iter()
+                    .any(|&j| above(&c, &shot.tracks[j].state_at(t, p), r, Some(approach)))
+            });
+            if past {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Instants from `t0` to `t1` (both included) about [`STEP`] of the way apart for a ball
+/// leaving in `s`.
+fn samples(t0: f64, t1: f64, s: &BallState) -> impl Iterator<Item = f64> {
+    let speed = Vec3::new(s.vel.x, s.vel.y, 0.0).norm();
+    let span = (t1 - t0).max(0.0);
+    let n = ((span * speed / STEP).ceil() as usize).clamp(1, MAX_SAMPLES);
+    (0..=n).map(move |i| t0 + span * i as f64 / n as f64)
+}
+
+/// True when the cue ball `c` is over the ball `o` (in play): less than 2R apart in plan and
+/// not touching, and, given the cue ball's `approach`, beyond `o`'s centre along it.
+fn above(c: &BallState, o: &BallState, r: f64, approach: Option<Vec3>) -> bool {
+    if !o.motion.in_play() {
+        return false;
+    }
+    let d = c.pos - o.pos;
+    let plan = Vec3::new(d.x, d.y, 0.0);
+    let over = plan.norm() < 2.0 * r && d.norm() > 2.0 * r + TOUCH && d.z > 0.0;
+    over && approach.is_none_or(|a| plan.dot(&a) > 0.0)
+}
