@@ -14,7 +14,8 @@
 
 use snooker_engine::{BallState, Motion, Shot, Vec3, motion};
 
-/// The cue ball's way between the samples of a flight, m: a fortieth of a ball's diameter.
+/// How far the balls move apart between the samples of a flight, m: a fiftieth of a ball's
+/// diameter.
 pub const STEP: f64 = 1e-3;
 /// The most samples of one flight (a flight's plan way is a few metres at most).
 const MAX_SAMPLES: usize = 20_000;
