@@ -91,7 +91,7 @@ commit = f", at commit {sys.argv[2]}" if len(sys.argv) > 2 else ""
 head = (f"**The run of 10⁶ scenes** (seed {seed}{commit}, in parts of 50,000 with `--from`; "
         "`scripts/fuzz_report.py LOG_DIR COMMIT` writes this part of the page from the parts' "
         "logs): "
-        + (f"**{fails} failures** in {c(n)} scenes." if done
+        + (f"**{fails} {'failure' if fails == 1 else 'failures'}** in {c(n)} scenes." if done
            else f"under way; the first {c(n)} scenes have **{fails} failures**.")
         + " Their endings:\n\n")
 unfinished = sum(phys[(k, e)] for k in kinds for e in (M, E))
