@@ -146,7 +146,7 @@ pub struct LayoutInfo {
 }
 
 /// The scene files built in: name, text, what it shows.
-const SCENES: [(&str, &str, &str); 15] = [
+const SCENES: [(&str, &str, &str); 16] = [
     (
         "cut-30",
         include_str!("../../scenes/cut-30.toml"),
@@ -216,6 +216,11 @@ const SCENES: [(&str, &str, &str); 15] = [
         "table-i-5",
         include_str!("../../scenes/table-i-5.toml"),
         "thesis Table I, collision 5, on the open cloth (appendix III)",
+    ),
+    (
+        "jump",
+        include_str!("../../scenes/jump.toml"),
+        "a jump shot over a red, on a bed that gives back half the fall (e_bed = 0.5)",
     ),
     (
         "break-off-shot",

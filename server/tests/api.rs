@@ -816,7 +816,9 @@ async fn every_scene_file_is_a_layout_that_loads() {
         })
         .collect();
     files.sort();
-    assert_eq!(files.len(), 15, "{files:?}");
+    // The directory is read, not listed here: a new scene file must be offered with no edit
+    // to this test (scenes/jump.toml was not, and only this test saw it).
+    assert!(files.iter().any(|f| f == "cut-30"), "{files:?}");
     for f in &files {
         // break-off.toml is the built-in shot of `snooker simulate`, offered as break-off-shot.
         let name = if f == "break-off" {
