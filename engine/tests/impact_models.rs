@@ -80,6 +80,73 @@ fn no_impact_adds_more_energy_than_the_solvers_tolerance_of_its_own() {
 }
 
 #[test]
+fn a_contact_sticking_from_the_start_adds_no_energy() {
+    // Fuzz seed 20261214, scene 145456: a ball whose slip at the nose was 8e-8 of its approach
+    // speed, within the solver's zero band, so held, gained 4.8e-8 of its energy at every
+    // impact of an elastic cushion (the holding friction pushed along the residual slip), a
+    // hundred times the audit's share. The residual is now stopped as Coulomb friction stops it,
+    // dissipating. First the scene's own impact, then random balls whose nose slip starts
+    // within the band, on elastic cushions with and without cloth friction.
+    use snooker_engine::audit::IMPACT_ENERGY_SHARE;
+    let mut p = Params::default();
+    p.e_cushion = 1.0;
+    p.mu_slide = 0.0;
+    let energy = |v: Vec3, w: Vec3, p: &Params| {
+        0.5 * p.ball_mass * v.norm_squared()
+            + 0.2 * p.ball_mass * p.ball_radius.powi(2) * w.norm_squared()
+    };
+    let gain = |ball: &BallState, normal: Vec3, p: &Params| {
+        let out = cush::solve(ball, normal, p, None).unwrap();
+        let before = energy(ball.vel, ball.spin, p);
+        (energy(out.after.vel[0], out.after.spin[0], p) - before) / before
+    };
+    let scene = BallState {
+        pos: Vec3::new(0.5, 1.0, p.ball_radius),
+        vel: Vec3::new(-0.37168319744179024, 5.268747772950596, 0.0),
+        spin: Vec3::new(80.4388820631549, 35.46595726776706, -3.5882708063218634e-06),
+        motion: Motion::Sliding,
+    };
+    let g = gain(&scene, -Vec3::y(), &p);
+    assert!(g <= 0.0, "scene 145456's impact gained {g:e} of its energy");
+    let (sin, r) = (p.cushion_sin_theta(), p.ball_radius);
+    let mut rng = sweep::Rng(sweep::SEED ^ 0x0014_5456);
+    let mut worst = f64::NEG_INFINITY;
+    for k in 0..20_000 {
+        p.mu_slide = if k % 2 == 0 { 0.0 } else { 0.21 };
+        p.mu_cushion = rng.uniform(0.02, 0.3);
+        let normal = -Vec3::y();
+        // From the centre to the nose (thesis §6.2): into the cushion and up.
+        let nose = -(1.0 - sin * sin).sqrt() * normal + sin * Vec3::z();
+        let speed = rng.uniform(0.3, 8.0);
+        let heading = rng.uniform(-1.3, 1.3);
+        let vel = speed * Vec3::new(heading.sin(), heading.cos(), 0.0);
+        // The spin that leaves the nose slip `residual` (tangent to the nose, up to the
+        // zero band's 1e-7 of the approach speed), with any spin about the normal.
+        let approach = vel.dot(&nose);
+        let mut residual = rng.vec(1.0);
+        residual -= residual.dot(&nose) * nose;
+        residual *= rng.uniform(0.0, 1e-7) * approach / residual.norm().max(1e-300);
+        let along = vel - vel.dot(&nose) * nose;
+        let spin = nose.cross(&(residual - along)) / r + rng.uniform(-50.0, 50.0) * nose;
+        let ball = BallState {
+            pos: Vec3::new(0.5, 1.0, r),
+            vel,
+            spin,
+            motion: Motion::Sliding,
+        };
+        let g = gain(&ball, normal, &p);
+        worst = worst.max(g);
+        assert!(
+            g <= IMPACT_ENERGY_SHARE,
+            "{k}: gained {g:e} of its energy ({ball:?}, mu_w {}, mu_s {})",
+            p.mu_cushion,
+            p.mu_slide
+        );
+    }
+    println!("largest gain {worst:e} of the impact's energy");
+}
+
+#[test]
 fn rolling_perpendicular_cushion_rebound_is_091_v() {
     // Thesis §6.2.5 / peers.md: e_e = 0.98, mu_w = 0.14 give a rebound of about 0.91 V.
     let p = Params::default();

@@ -12,7 +12,7 @@ use crate::impact::dopri::{self, ErrorMeasure};
 const VELOCITY_PER_SLIP_TOLERANCE: f64 = 30.0;
 /// A dying slip's tolerance per step, in units of `tol` (see [`SlipAware`]): at 10, 200,000
 /// random impacts of each model are as accurate as when it was held to `tol` (medians better,
-/// worst 2.2e-7 and 6.2e-7 of V); at 30 (the velocities') an airborne ball coming down on a
+/// worst 2.2e-7 and 6.4e-7 of V); at 30 (the velocities') an airborne ball coming down on a
 /// ball on the cloth with spins of 3 V/R was off by 1.1e-6 (docs/impact-convergence.md).
 const DYING_SLIP_PER_TOLERANCE: f64 = 10.0;
 

@@ -14,7 +14,7 @@ use crate::impact::dopri::Stop;
 
 /// Tolerance of the integration (scaled units): that of the slips near zero, the velocities'
 /// being 30 times larger (the step error measure, `impulse/measure.rs`). Results are within 1e-6
-/// of the converged solution over random impacts with frictions up to 0.3 (worst 6.2e-7 in
+/// of the converged solution over random impacts with frictions up to 0.3 (worst 6.4e-7 in
 /// 200,000; engine/tests/impact_models.rs, docs/impact-convergence.md).
 pub const TOLERANCE: f64 = 5e-10;
 /// A slip below this many integration tolerances (as a fraction of V) counts as zero: above
@@ -259,6 +259,7 @@ impl Impact {
                 w_target = target;
             }
             let mode = self.mode_at::<M, P>(&y, compressing, w_target, zero);
+            self.stop_residual_slips::<M, P>(&mut y, &mode);
             let ph = self.integrate_phase::<M, P>(&mode, p, y, h, tol, paths.establish, |x, yy| {
                 if recorder.trace.is_some() {
                     recorder.record(x, &P::whole(yy), &mode)
