@@ -88,9 +88,11 @@ fn a_contact_sticking_from_the_start_adds_no_energy() {
     // dissipating. First the scene's own impact, then random balls whose nose slip starts
     // within the band, on elastic cushions with and without cloth friction.
     use snooker_engine::audit::IMPACT_ENERGY_SHARE;
-    let mut p = Params::default();
-    p.e_cushion = 1.0;
-    p.mu_slide = 0.0;
+    let mut p = Params {
+        e_cushion: 1.0,
+        mu_slide: 0.0,
+        ..Params::default()
+    };
     let energy = |v: Vec3, w: Vec3, p: &Params| {
         0.5 * p.ball_mass * v.norm_squared()
             + 0.2 * p.ball_mass * p.ball_radius.powi(2) * w.norm_squared()
