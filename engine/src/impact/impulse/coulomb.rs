@@ -111,14 +111,27 @@ impl Impact {
     ) -> [f64; 6] {
         let forces = self.forces_under::<M, P>(y, loc.slip[PRIMARY], mode, held, pressed);
         let dy = self.derivatives::<M, P>(loc.vn, &forces);
+        self.in_tangents(which, |k| self.slip_rate::<M, P>(&dy, k))
+    }
+
+    /// The vectors `v(k)` of the contacts in `which`, each in its tangent basis, in order.
+    fn in_tangents(&self, which: &[usize], v: impl Fn(usize) -> Vec3) -> [f64; 6] {
         let mut r = [0.0; 6];
         for (j, &k) in which.iter().enumerate() {
-            let d = self.slip_rate::<M, P>(&dy, k);
-            let t = self.tangents(k);
+            let (d, t) = (v(k), self.tangents(k));
             r[2 * j] = d.dot(&t[0]);
             r[2 * j + 1] = d.dot(&t[1]);
         }
         r
+    }
+
+    /// Sets `held[k]` of each contact k in `which` from its tangent components in `x` (as
+    /// [`Impact::in_tangents`] orders them).
+    fn set_from_tangents(&self, which: &[usize], x: &[f64; 6], held: &mut Held) {
+        for (j, &k) in which.iter().enumerate() {
+            let t = self.tangents(k);
+            held[k] = x[2 * j] * t[0] + x[2 * j + 1] * t[1];
+        }
     }
 
     /// The bodies the cloth presses on when the contacts at zero slip exert `held`: a
@@ -188,10 +201,7 @@ impl Impact {
             b[row] = -base[row];
         }
         if solve_dense(&mut a, &mut b, n).is_some() {
-            for (j, &k) in which.iter().enumerate() {
-                let t = self.tangents(k);
-                held[k] = b[2 * j] * t[0] + b[2 * j + 1] * t[1];
-            }
+            self.set_from_tangents(which, &b, held);
         }
         single
     }
@@ -264,20 +274,12 @@ impl Impact {
         let (_, mut a) = self.response::<M, P>(y, &loc, mode, &zeroed, which, pressed);
         // The friction impulse J with a J = -s: the slips' change per unit friction is their
         // change per unit friction impulse.
-        let mut b = [0.0; 6];
-        for (j, &k) in which.iter().enumerate() {
-            let t = self.tangents(k);
-            b[2 * j] = -loc.slip[k].dot(&t[0]);
-            b[2 * j + 1] = -loc.slip[k].dot(&t[1]);
-        }
+        let mut b = self.in_tangents(which, |k| -loc.slip[k]);
         if solve_dense(&mut a, &mut b, 2 * n).is_none() {
             return false;
         }
         let mut impulse = zeroed;
-        for (j, &k) in which.iter().enumerate() {
-            let t = self.tangents(k);
-            impulse[k] = b[2 * j] * t[0] + b[2 * j + 1] * t[1];
-        }
+        self.set_from_tangents(which, &b, &mut impulse);
         // The state's change is the rates' change with the frictions J against without.
         let rate = |h: &Held| {
             let f = self.forces_under::<M, P>(y, loc.slip[PRIMARY], mode, h, pressed);
