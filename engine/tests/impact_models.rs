@@ -109,6 +109,7 @@ fn a_contact_sticking_from_the_start_adds_no_energy() {
         motion: Motion::Sliding,
     };
     let g = gain(&scene, -Vec3::y(), &p);
+    println!("scene 145456's impact: {g:e} of its energy");
     assert!(g <= 0.0, "scene 145456's impact gained {g:e} of its energy");
     let (sin, r) = (p.cushion_sin_theta(), p.ball_radius);
     let mut rng = sweep::Rng(sweep::SEED ^ 0x0014_5456);

@@ -466,7 +466,10 @@ fn a_pair_pressed_together_may_meet_again_within_the_contact_band() {
     // pair, 1.4e-11 m inside contact and approaching, counts as touching at once, while the
     // touch before was found a skin (1e-10 m) inside: 2.8e-8 s sooner than the bound that
     // ignored the detection's band. The engine was right; the audit's bound now counts the
-    // band (`audit::least_remeet_gap`).
+    // band (`audit::least_remeet_gap`). Since the impact solver stops a held slip's residual
+    // (8557f86), red12 leaves its first cushion rolling, not 9 us short of it, and the shot
+    // goes otherwise: red12 starts 100 nm lower here, which gives such a touch again, in
+    // red1's train on red5 (a gap 2.3e-7 s under the band-free bound).
     let (_, shot) = run(r#"
 [params]
 mu_slide = 1.0
@@ -543,10 +546,10 @@ spin = [-1162.617242839734, 40.544276379592404, 798.5579827553761]
 
 [[balls]]
 id = "red12"
-pos = [2.9909137470864255, 1.724355806565692]"#);
+pos = [2.9909137470864255, 1.724355706565692]"#);
     let p = &shot.params;
     let id = |name: &str| shot.tracks.iter().position(|t| t.id == name).unwrap();
-    let pair = [id("red3"), id("red12")];
+    let pair = [id("red1"), id("red5")];
     let touches: Vec<_> = shot
         .events
         .iter()

@@ -241,7 +241,7 @@ impl Impact {
     /// scene 145456). Coulomb friction takes such a slip to zero within an impulse of about
     /// s / (mu K) (1e-7 of the impact's), dissipating s^T K^-1 s / 2 (K the contacts'
     /// compliance, Stronge 2000 §2.3): the friction impulse that does so is applied here at
-    /// once, with the cloth's reaction that keeps a pressed ball on it. Returns whether `y`
+    /// once, with the cloth's reaction that keeps a ball on it there. Returns whether `y`
     /// changed.
     pub(super) fn stop_residual_slips<const M: usize, P: Pair<M>>(
         &self,
@@ -252,7 +252,7 @@ impl Impact {
             return false;
         }
         let loc = self.local::<M, P>(y);
-        let (held, creeping) = self.at_zero::<M, P>(y, &loc, mode);
+        let creeping = self.at_zero::<M, P>(y, &loc, mode).1;
         let mut which = [0usize; 3];
         let mut n = 0;
         for k in 0..3 {
@@ -266,26 +266,32 @@ impl Impact {
             return false;
         }
         let which = &which[..n];
-        let mut zeroed = held;
-        for &k in which {
-            zeroed[k] = Vec3::zeros();
+        // Only these frictions act, and the cloth keeps a ball on it there (its vertical
+        // velocity unchanged): a reaction that does no work, so that J's compliance K is
+        // symmetric and the stop dissipates. (A slipping cloth contact's friction, following
+        // a reaction that may pull, could push along its slip.)
+        let mut only = *mode;
+        for (k, law) in only.friction.iter_mut().enumerate() {
+            if !which.contains(&k) {
+                *law = Friction::Off;
+            }
         }
-        let pressed = self.pressed_under::<M, P>(y, &loc, mode, &held);
-        let (_, mut a) = self.response::<M, P>(y, &loc, mode, &zeroed, which, pressed);
+        let pressed = [0, 1].map(|i| self.bodies[i].on_cloth && P::vel(y, i).z <= 0.0);
+        let (_, mut a) = self.response::<M, P>(y, &loc, &only, &NONE_HELD, which, pressed);
         // The friction impulse J with a J = -s: the slips' change per unit friction is their
         // change per unit friction impulse.
         let mut b = self.in_tangents(which, |k| -loc.slip[k]);
         if solve_dense(&mut a, &mut b, 2 * n).is_none() {
             return false;
         }
-        let mut impulse = zeroed;
+        let mut impulse = NONE_HELD;
         self.set_from_tangents(which, &b, &mut impulse);
         // The state's change is the rates' change with the frictions J against without.
         let rate = |h: &Held| {
-            let f = self.forces_under::<M, P>(y, loc.slip[PRIMARY], mode, h, pressed);
+            let f = self.forces_under::<M, P>(y, loc.slip[PRIMARY], &only, h, pressed);
             self.derivatives::<M, P>(loc.vn, &f)
         };
-        let (with, without) = (rate(&impulse), rate(&zeroed));
+        let (with, without) = (rate(&impulse), rate(&NONE_HELD));
         for ((v, w), wo) in y.iter_mut().zip(with).zip(without) {
             *v += w - wo;
         }
