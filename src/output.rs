@@ -98,16 +98,39 @@ pub fn check_output(path: &std::path::Path) -> Result<(), OutputError> {
     }
 }
 
-/// Whether `a` and `b` name one file: the same existing file (through links), or the same
-/// path made absolute.
+/// Whether `a` and `b` name one file once written: the same path after the links of the last
+/// component are followed, the longest existing part is resolved (links, `.` and `..`) and
+/// the rest is taken lexically (`out/../out/a.json` and `out/a.json` are one file though
+/// `out` does not exist yet; so are two spellings through a linked directory).
 pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
-    match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => matches!(
-            (std::path::absolute(a), std::path::absolute(b)),
-            (Ok(a), Ok(b)) if a == b
-        ),
+    match (resolved(a), resolved(b)) {
+        (Some(a), Some(b)) => a == b,
+        _ => false,
     }
+}
+
+/// The file `path` leads to, as [`same_file`] compares it (None: the working directory is
+/// unknown, or no part of the path exists, not even its root).
+fn resolved(path: &std::path::Path) -> Option<std::path::PathBuf> {
+    use std::path::Component;
+    let last = link_chain(path).pop()?;
+    let absolute = std::path::absolute(last).ok()?;
+    let parts: Vec<Component> = absolute.components().collect();
+    (0..=parts.len()).rev().find_map(|k| {
+        let head: std::path::PathBuf = parts[..k].iter().collect();
+        let mut out = head.canonicalize().ok()?;
+        // What does not exist holds no links: `..` there undoes the part before it.
+        for part in &parts[k..] {
+            match part {
+                Component::ParentDir => {
+                    out.pop();
+                }
+                Component::CurDir => {}
+                other => out.push(other),
+            }
+        }
+        Some(out)
+    })
 }
 
 /// Checks a command's outputs before any work: each can become a file ([`check_output`]), no
@@ -343,6 +366,47 @@ mod tests {
         files.commit().unwrap();
         assert_eq!(std::fs::read(dir.join("e/sum.json")).unwrap(), b"{}");
         assert_eq!(std::fs::read(dir.join("log.jsonl")).unwrap(), b"{}\n");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// Two spellings of one output file are one file, whether it exists or not: through `..`
+    /// and through a linked directory (before, only an existing file was resolved, and
+    /// `--json o/a.json --record o/../o/a.json` staged both into one temporary file, exited 2
+    /// and left the recording under the JSON's name).
+    #[cfg(unix)]
+    #[test]
+    fn two_spellings_of_one_output_are_one_file() {
+        let dir = std::env::temp_dir().join(format!("snooker-same-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("real")).unwrap();
+        std::os::unix::fs::symlink("real", dir.join("link")).unwrap();
+        let pairs = [
+            ("o/a.json", "o/../o/a.json"),
+            ("o/a.json", "o/./a.json"),
+            ("real/a.json", "link/a.json"),
+            ("real/new/a.json", "link/new/x/../a.json"),
+        ];
+        for (a, b) in pairs {
+            assert!(same_file(&dir.join(a), &dir.join(b)), "{a} {b}");
+        }
+        assert!(!same_file(&dir.join("o/a.json"), &dir.join("o/b.json")));
+        assert!(!same_file(&dir.join("o/a.json"), &dir.join("a.json")));
+        std::fs::write(dir.join("real/in.toml"), "x").unwrap();
+        let e = check_outputs(
+            &[("--json", Some(dir.join("link/x/../in.toml")))],
+            &[&dir.join("real/in.toml")],
+        )
+        .unwrap_err();
+        assert!(e.contains("is an input"), "{e}");
+        let e = check_outputs(
+            &[
+                ("--json", Some(dir.join("o/a.json"))),
+                ("--record", Some(dir.join("o/../o/a.json"))),
+            ],
+            &[],
+        )
+        .unwrap_err();
+        assert!(e.contains("is also --json's file"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }
 

@@ -169,6 +169,23 @@ fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// A picture as PNG bytes: `draw` writes it to a file of a private temporary directory, read
+/// back and removed, so that an output can be staged with the command's others and put in
+/// place with them or not at all ([`crate::output::Outputs`]).
+pub fn png_bytes(draw: impl FnOnce(&Path) -> anyhow::Result<()>) -> anyhow::Result<Vec<u8>> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("snooker-plot-{}-{n}", std::process::id()));
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let path = dir.join("plot.png");
+    let bytes = draw(&path).and_then(|()| {
+        std::fs::read(&path).with_context(|| format!("cannot read {}", path.display()))
+    });
+    let _ = std::fs::remove_dir_all(&dir);
+    bytes
+}
+
 /// Writes the picture to `path`.
 fn present(
     root: &plotters::drawing::DrawingArea<

@@ -520,14 +520,11 @@ fn bad_synth_requests_are_rejected_and_write_nothing() {
         (vec!["--param", "mu_rol=0.01"], "unknown parameter"),
         // A negative value read as an unknown flag ("unexpected argument '-1'"); a camera
         // setting blamed on the scene file; the noise (mm) told in m.
-        (
-            vec!["--fps", "-10"],
-            "--fps -10: must be between 0 and 10000",
-        ),
+        (vec!["--fps", "-10"], "--fps -10: must be in (0, 10000]"),
         (vec!["--drop", "1.5"], "--drop 1.5: must be"),
         (
             vec!["--noise", "200"],
-            "--noise 200: must be between 0.001 and 100 mm",
+            "--noise 200: must be in [0, 100) mm",
         ),
         // The data file listed both as the hidden truth and only the last was hidden.
         (

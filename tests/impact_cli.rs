@@ -133,6 +133,42 @@ fn bad_input_exits_with_2() {
     }
 }
 
+/// An approach too slow along the normal to resolve names `--speed` and the floor: before,
+/// an independent hunt's speeds inside the stated range (1e-300 m/s at 1e-30 degrees,
+/// 5e-324 m/s at a cut of 88 degrees) underflowed to a normal speed of 0 and failed as the
+/// solver's "not approaching", naming no flag. The slowest resolved approach still resolves.
+#[test]
+fn an_approach_too_slow_to_resolve_names_the_speed() {
+    for args in [
+        &["impact", "cushion", "--speed", "1e-300", "--angle", "1e-30"][..],
+        &["impact", "ball-ball", "--speed", "5e-324", "--cut", "88"],
+        &["impact", "cushion", "--speed", "1e-10"],
+    ] {
+        let o = snooker(args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains("--speed") && err.contains("below 1e-9"),
+            "{err}"
+        );
+    }
+    let o = snooker(&[
+        "impact",
+        "ball-ball",
+        "--speed",
+        "1e-7",
+        "--cut",
+        "80",
+        "--json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
 /// `--plot` is checked before the impact is solved, and a plot that cannot be written leaves
 /// nothing printed: before, `--json --plot DIR` printed the whole JSON document and then
 /// failed (exit 2 with a result on standard output), and `--plot x.txt` was found only by the

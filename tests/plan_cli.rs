@@ -291,6 +291,11 @@ fn bad_requests_exit_2_with_one_message_and_write_nothing() {
             format!("{ok} --cue-to 1,1 --bounds speed=0.3..40"),
             "--bounds",
         ),
+        // A variable twice kept its last interval silently.
+        (
+            format!("{ok} --cue-to 1,1 --bounds speed=1..2,speed=1..3"),
+            "`speed` is given twice",
+        ),
         // More samples than memory holds records for: refused, not a panic (capacity
         // overflow) or an allocation the machine cannot make.
         (

@@ -219,6 +219,45 @@ fn bad_input_exits_2_with_one_message_and_writes_nothing() {
     assert!(!log.exists());
 }
 
+/// `play` ignores a frame file's `[cue]` (its help says so): a frame on a colour with no
+/// colour nominated and a `[cue]` is a position to choose a stroke from, not a stroke to
+/// judge. Before, it was refused (exit 2 on `frame.nominated`) though the same frame without
+/// the `[cue]` played.
+#[test]
+fn a_frames_cue_is_ignored_not_judged() {
+    let dir = temp_dir("play-cue-ignored");
+    let frame = dir.join("on-colour.toml");
+    let text = std::fs::read_to_string(OPEN)
+        .unwrap()
+        .replace("on = \"red\"", "on = \"colour\"")
+        .replace("ball_in_hand = true", "ball_in_hand = false")
+        + "[[balls]]\nid = \"cue\"\npos = [0.5, 0.3]\n[cue]\nball = \"cue\"\nspeed = 1.0\naim = 0.0\n";
+    std::fs::write(&frame, &text).unwrap();
+    // The referee, which plays the [cue], needs the nomination.
+    let o = snooker(&["referee", frame.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("frame.nominated"));
+    let log = dir.join("log.jsonl");
+    let o = snooker(&[
+        "play",
+        frame.to_str().unwrap(),
+        "--log",
+        log.to_str().unwrap(),
+        "--max-strokes",
+        "1",
+        "--effort",
+        "50",
+        "--threads",
+        "1",
+        "--quiet",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let line = &lines(&log)[0];
+    assert_ne!(line["nominated"], "", "{line}");
+    assert!(line["frame"].as_str().unwrap().contains("on = \"colour\""));
+}
+
 /// Any finite noise is played: a side error metres wide (`standard*10000`: 5 m) is pulled in
 /// to a strike the tip can make. The offset was pulled in by at most 400 steps of 1 % (to 2 %
 /// of it), so an error of more than about 0.7 m stopped the play with exit 1 and a message

@@ -26,8 +26,21 @@ fn a_missing_scene_is_bad_input() {
 
 #[test]
 fn a_bad_time_step_is_bad_input() {
-    let out = snooker().args(["validate", "--dt", "-1"]).output().unwrap();
+    for dt in ["-1", "0.02", "nan"] {
+        let out = snooker().args(["validate", "--dt", dt]).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{dt}");
+    }
+    // Taken before, and the cross-check never finished.
+    let out = snooker()
+        .args(["validate", "--dt", "1e-300"])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--dt 1e-300: must be a time step in [1e-5, 0.01] s"),
+        "{err}"
+    );
 }
 
 #[test]

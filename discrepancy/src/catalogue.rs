@@ -202,7 +202,14 @@ impl Effect {
         match self {
             Effect::RollingResistance => one("mu_roll", 0.0, 0.1, 1e-4),
             Effect::SpeedDependentSliding => vec![
-                EffectParam::new("mu_slide_low", 0.01, p.mu_slide, 1e-3),
+                // At most the sliding friction it falls from; its floor of 0.01 comes down
+                // below a cloth of mu_slide under 0.02, so that the range is never empty.
+                EffectParam::new(
+                    "mu_slide_low",
+                    0.01_f64.min(0.5 * p.mu_slide),
+                    p.mu_slide,
+                    1e-3,
+                ),
                 EffectParam::new("slide_speed_scale", 0.01, 5.0, 1e-2),
             ],
             Effect::SidespinDecay => one("sidespin_decel", 0.0, 200.0, 0.1),
@@ -337,15 +344,25 @@ mod tests {
     fn every_fit_range_lies_within_the_parameters_declared_range() {
         // A fit never leaves the values the engine accepts (snooker_engine::params::PARAMS),
         // whatever the rolling resistance a tilt's range depends on.
-        for mu_roll in [0.0128, 0.1] {
+        // Nor is a range ever empty (a cloth of mu_slide 0.005 gave mu_slide_low [0.01, 0.005],
+        // and the fit's clamp panicked), and each effect's start lies in its ranges.
+        for (mu_roll, mu_slide) in [(0.0128, 0.212), (0.1, 0.212), (0.0128, 0.005), (0.0, 0.0)] {
             let mut m = Model {
                 params: Params::default(),
                 models: Models::default(),
             };
             m.params.mu_roll = mu_roll;
+            m.params.mu_slide = mu_slide;
             for e in Effect::ALL {
-                for p in e.params(&m) {
+                let params = e.params(&m);
+                for start in e.starts(&m).iter().filter(|_| !params.is_empty()) {
+                    for (p, v) in params.iter().zip(start) {
+                        assert!((p.low..=p.high).contains(v), "{}: start {v}", p.name);
+                    }
+                }
+                for p in params {
                     let info = Params::info(p.name).unwrap();
+                    assert!(p.low <= p.high, "{}: [{}, {}]", p.name, p.low, p.high);
                     assert!(
                         info.range.contains(p.low) && info.range.contains(p.high),
                         "{}: [{}, {}] outside {}",

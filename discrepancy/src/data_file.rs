@@ -421,6 +421,29 @@ fn relative(dir: &Path, p: &str) -> PathBuf {
     dir.join(p)
 }
 
+/// The files a data file reads: itself, and each shot's scene, tracks and observables
+/// (relative to its directory; only the data file itself if it does not parse). A command's
+/// output must be none of them.
+pub fn files(path: &Path) -> Vec<PathBuf> {
+    let mut out = vec![path.to_path_buf()];
+    let Some(spec) = scene::read_text(path)
+        .ok()
+        .and_then(|text| scene::from_toml::<DataFile>(&text, "").ok())
+    else {
+        return out;
+    };
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let top = [&spec.scene, &spec.tracks, &spec.observables];
+    let named = spec
+        .shots
+        .iter()
+        .flat_map(|s| [Some(&s.scene), s.tracks.as_ref(), s.observables.as_ref()])
+        .chain(top.into_iter().map(Option::as_ref))
+        .flatten();
+    out.extend(named.map(|f| relative(dir, f)));
+    out
+}
+
 /// Reads a data file and everything it names; `model`, if given, is a model file applied on
 /// top of the scenes' own model.
 pub fn load(path: &Path, model: Option<&Path>) -> Result<Measurement, SceneError> {

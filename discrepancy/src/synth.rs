@@ -298,13 +298,13 @@ pub fn check_camera(c: &Camera) -> Result<(), DiscrepancyError> {
         })
     };
     if !(c.fps.is_finite() && c.fps > 0.0 && c.fps <= 10_000.0) {
-        return bad("fps", "between 0 and 10000", c.fps);
+        return bad("fps", "in (0, 10000]", c.fps);
     }
     if !(c.noise.is_finite() && c.noise >= 0.0 && c.noise < 0.1) {
-        return bad("noise", "between 0 and 0.1 m", c.noise);
+        return bad("noise", "in [0, 0.1) m", c.noise);
     }
     if !(0.0..0.9).contains(&c.drop_rate) {
-        return bad("drop rate", "between 0 and 0.9", c.drop_rate);
+        return bad("drop rate", "in [0, 0.9)", c.drop_rate);
     }
     if !(c.max_duration.is_finite() && c.max_duration > 0.0) {
         return bad("duration", "positive", c.max_duration);
@@ -333,7 +333,7 @@ pub fn film(
     let mut rng = ChaCha8Rng::seed_from_u64(camera.seed);
     let normal = Normal::new(0.0, camera.noise).map_err(|_| DiscrepancyError::Camera {
         setting: "noise",
-        range: "between 0 and 0.1 m",
+        range: "in [0, 0.1) m",
         value: camera.noise,
     })?;
     let offsets = wobble_offsets(&sim, uncatalogued, end);

@@ -190,7 +190,8 @@ impl Noise {
         let mut z = [0.0; 5];
         for (k, c) in NoiseComponent::ALL.into_iter().enumerate() {
             let n: f64 = StandardNormal.sample(rng);
-            z[k] = self.get(c) * n;
+            // Finite always: a deviation near f64::MAX times a draw beyond 1 would overflow.
+            z[k] = (self.get(c) * n).clamp(-f64::MAX, f64::MAX);
         }
         StrikeErrors {
             aim: z[0],
@@ -240,14 +241,21 @@ pub fn execute(intended: &Cue, errors: &StrikeErrors, ball: &BallState, p: &Para
     }
     if offset_refused(&cue) {
         // Still refused after 400 steps (to 2 % of the first offset): an error metres beyond
-        // the ball, or a tiny miscue limit. The largest share of this offset that strikes, by
-        // bisection (the centre, share 0, always strikes), so that any finite noise is played.
+        // the ball, or a tiny miscue limit. The farthest offset along this direction that
+        // strikes, by bisection over the distance from the centre (which always strikes) up
+        // to the ball's radius, so that any finite noise is played at the limit. (Bisecting a
+        // share of the offset instead lost the limit below its resolution, 2^-64 of an error
+        // of 1e19 m, and struck the centre.)
         let full = cue.offset;
-        let at = |k: f64| Cue {
-            offset: [k * full[0], k * full[1]],
+        let scale = full[0].abs().max(full[1].abs());
+        let (x, y) = (full[0] / scale, full[1] / scale);
+        let length = x.hypot(y);
+        let unit = [x / length, y / length];
+        let at = |r: f64| Cue {
+            offset: [r * unit[0], r * unit[1]],
             ..cue
         };
-        let (mut lo, mut hi) = (0.0, 1.0);
+        let (mut lo, mut hi) = (0.0, (scale * length).min(p.ball_radius));
         for _ in 0..64 {
             let mid = 0.5 * (lo + hi);
             if offset_refused(&at(mid)) {
@@ -300,7 +308,14 @@ impl Noise {
         if self.side == self.height {
             self.side
         } else {
-            (0.5 * (self.side * self.side + self.height * self.height)).sqrt()
+            let rms = (0.5 * (self.side * self.side + self.height * self.height)).sqrt();
+            // The squares of a side of 1e155 m overflowed, and the key was written null; hypot
+            // does not (it is used only there, so that other values keep their bits).
+            if rms.is_finite() {
+                rms
+            } else {
+                self.side.hypot(self.height) * std::f64::consts::FRAC_1_SQRT_2
+            }
         }
     }
 }
@@ -373,6 +388,70 @@ mod tests {
             let c = loud.apply(&cue, &ball, &p, &mut rng_for(9, &[k]));
             snooker_engine::cue::strike(&ball, &c, &p).unwrap();
         }
+    }
+
+    /// Any finite noise is played at the engine's limits, in its direction: before, a side
+    /// error of 1e19 m or more struck the exact centre (the bisection over a share of the
+    /// offset lost the limit below its resolution), and a deviation near f64::MAX drew an
+    /// infinite error whose heading was NaN.
+    #[test]
+    fn a_huge_noise_strikes_at_the_limits_in_its_direction() {
+        let p = Params::default();
+        let ball = BallState::at_rest(1.0, 0.5, p.ball_radius);
+        let cue = Cue {
+            speed: 2.0,
+            aim: 0.3,
+            offset: [0.0, 0.0],
+            elevation: 0.0,
+        };
+        let edge = p.miscue_limit * p.ball_radius;
+        for side in [1e18, 1e19, 1e100, 1e300, f64::MAX] {
+            for sign in [1.0, -1.0] {
+                let errors = StrikeErrors {
+                    aim: 0.0,
+                    elevation: 0.0,
+                    speed: 0.0,
+                    side: sign * side,
+                    height: 0.5 * side,
+                };
+                let c = execute(&cue, &errors, &ball, &p);
+                snooker_engine::cue::strike(&ball, &c, &p).unwrap();
+                let r = c.offset[0].hypot(c.offset[1]);
+                // The miscue limit is the engine's (cue::strike): at least its radius on the
+                // level (edge), and the offset as far out as it allows within 1e-9 of it.
+                assert!(
+                    r >= edge && r < p.ball_radius,
+                    "side {side}: offset {:?}",
+                    c.offset
+                );
+                let further = Cue {
+                    offset: [c.offset[0] * (1.0 + 1e-9), c.offset[1] * (1.0 + 1e-9)],
+                    ..c
+                };
+                assert!(snooker_engine::cue::strike(&ball, &further, &p).is_err());
+                assert_eq!(c.offset[0].signum(), sign, "side {side}");
+                assert!((c.offset[1] / c.offset[0] - 0.5 * sign).abs() < 1e-9);
+            }
+        }
+        let huge = Noise {
+            aim: f64::MAX,
+            elevation: f64::MAX,
+            speed: f64::MAX,
+            side: f64::MAX,
+            height: f64::MAX,
+        };
+        for k in 0..50 {
+            let c = huge.apply(&cue, &ball, &p, &mut rng_for(3, &[k]));
+            assert!(c.aim.is_finite() && c.speed.is_finite(), "{c:?}");
+            snooker_engine::cue::strike(&ball, &c, &p).unwrap();
+        }
+        let json = serde_json::to_value(Noise {
+            side: 1e155,
+            ..Noise::ZERO
+        })
+        .unwrap();
+        let rms = json["offset"].as_f64().unwrap();
+        assert!((rms / (1e155 * std::f64::consts::FRAC_1_SQRT_2) - 1.0).abs() < 1e-12);
     }
 
     #[test]

@@ -169,6 +169,13 @@ pub enum Problem {
         "a free ball is awarded to the incoming player after a foul, who is on a red or the lowest colour, never on = \"colour\""
     )]
     FreeBallOnColour,
+    /// A score above [`crate::state::MAX_SCORE`].
+    #[error(
+        "{0} is above {max}, the most a frame's score may be (far beyond any frame; a score \
+         near the 32-bit limit would overflow when points are added)",
+        max = crate::state::MAX_SCORE
+    )]
+    ScoreTooHigh(u32),
     /// `to_play` or `first_player` not 0 or 1.
     #[error("must be 0 or 1 (player 0 or player 1), got {0}")]
     NotAPlayer(i64),

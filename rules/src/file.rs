@@ -95,6 +95,21 @@ pub fn parse(text: &str, file: &str) -> Result<FrameFile, SceneError> {
     from_parts(snooker_scene::parse_with_frame(text, file)?, text, file)
 }
 
+/// Reads a frame file as a position to choose a stroke from (`snooker play`): its `[cue]`, if
+/// any, is read as in any scene but not held to the frame (it may lack the nomination a
+/// stroke on a colour needs) and is dropped (`strike` is None).
+pub fn load_position(path: &Path) -> Result<FrameFile, SceneError> {
+    let file = path.display().to_string();
+    let text = snooker_scene::read_text(path)
+        .map_err(|e| SceneError::new(&file, "", format!("cannot read the frame file: {e}")))?;
+    let mut read = snooker_scene::parse_with_frame(&text, &file)?;
+    // The scene holds the strike applied: the struck ball goes back to its state before it.
+    if let Some(s) = read.scene.strike.take() {
+        read.scene.setup.balls[s.index].state = s.before;
+    }
+    from_parts(read, &text, &file)
+}
+
 /// Reads a frame given as one JSON object with the frame file's keys (a Python dict).
 pub fn parse_json(text: &str, file: &str) -> Result<FrameFile, SceneError> {
     from_parts(

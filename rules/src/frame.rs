@@ -170,6 +170,9 @@ impl Frame {
                 return Err(err(Key::Frame(key), Problem::NotAPlayer(p.into())));
             }
         }
+        if let Some(&high) = s.scores.iter().find(|&&v| v > crate::state::MAX_SCORE) {
+            return Err(err(Key::Frame("scores"), Problem::ScoreTooHigh(high)));
+        }
         let on_key = Key::Frame("on");
         if !self.has_colour(Colour::Black) {
             return Err(err(Key::Other("balls"), Problem::NoBlack));

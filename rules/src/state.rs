@@ -145,6 +145,11 @@ pub(crate) fn deserialize_nominated<'de, D: Deserializer<'de>>(
     d.deserialize_str(Name)
 }
 
+/// The highest score a frame may carry, points: far beyond any frame (147 is the highest
+/// break, fouls score at most 7 a stroke), and far enough below the 32-bit limit that no
+/// number of strokes a run can play takes a score past it (about 470 million strokes of 7).
+pub const MAX_SCORE: u32 = 1_000_000_000;
+
 /// `scores`: exactly two non-negative integers; anything else is one error at the key itself.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Scores(pub [u32; 2]);

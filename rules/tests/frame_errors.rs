@@ -387,3 +387,32 @@ fn a_frame_built_in_code_is_checked_for_what_a_file_cannot_say() {
         .frame;
     assert_eq!(back, f);
 }
+
+/// A score past MAX_SCORE is refused (before, scores up to the 32-bit limit were read and a
+/// foul's points saturated there: 0-4294967293 plus 4 gave 0-4294967295, and a black potted
+/// at 4294967290-4294967295 made a false tie); at the limit a foul adds its full points.
+#[test]
+fn a_score_past_the_limit_is_refused_and_one_at_it_adds_up() {
+    let max = snooker_rules::state::MAX_SCORE;
+    refused(
+        &frame(
+            &format!("on = \"red\"\nscores = [0, {}]", max + 1),
+            &red_and_cue(),
+        ),
+        "frame.scores",
+        "is above 1000000000",
+    );
+    // Player 0 strikes the cue ball away from every ball: no ball hit, a foul of 4.
+    let text = format!(
+        "[cue]\nball = \"cue\"\nspeed = 0.5\naim = 3.14159\n{}",
+        frame(
+            &format!("on = \"red\"\nscores = [0, {max}]"),
+            &red_and_cue()
+        )
+    );
+    let f = snooker_rules::parse(&text, "at-limit.toml").unwrap();
+    let setup = f.frame.setup(&f.strike.unwrap()).unwrap();
+    let shot = snooker_engine::simulate(&setup, f.frame.options()).unwrap();
+    let v = f.frame.judge(&shot).unwrap();
+    assert_eq!(v.scores, [0, max + 4], "{:?}", v.foul);
+}

@@ -79,6 +79,21 @@ pub enum ImpactReportError {
         /// The surface speed, m/s.
         surface: f64,
     },
+    /// The approach along the contact normal is too slow to resolve (a tiny speed, or a
+    /// grazing angle or cut, underflows it towards zero).
+    #[error(
+        "speed {} m/s approaches along the contact normal at {} m/s, below {} m/s: too slow \
+         an approach for an impact (a larger speed, angle or smaller cut)",
+        Shown(*.speed),
+        Shown(*.normal),
+        Shown(MIN_NORMAL_SPEED)
+    )]
+    NormalSpeed {
+        /// The speed given, m/s.
+        speed: f64,
+        /// Its component along the contact normal, m/s.
+        normal: f64,
+    },
     /// The cut is outside (-89, 89) degrees.
     #[error("cut must lie in (-89, 89) degrees, got {}", Shown(*.0))]
     Cut(f64),
@@ -98,7 +113,9 @@ impl ImpactReportError {
     /// begins with; none for a failure of the solver.
     pub fn field(&self) -> Option<&'static str> {
         match self {
-            ImpactReportError::Speed(_) | ImpactReportError::SurfaceSpeed { .. } => Some("speed"),
+            ImpactReportError::Speed(_)
+            | ImpactReportError::SurfaceSpeed { .. }
+            | ImpactReportError::NormalSpeed { .. } => Some("speed"),
             ImpactReportError::Spin { name, .. } => Some(name),
             ImpactReportError::Cut(_) => Some("cut"),
             ImpactReportError::Angle(_) => Some("angle"),
@@ -286,8 +303,21 @@ fn check(spec: &ImpactSpec) -> Result<(), ImpactReportError> {
         Geometry::Cushion { angle } if !(angle.is_finite() && angle > 0.0 && angle <= 90.0) => {
             Err(ImpactReportError::Angle(angle))
         }
-        _ => Ok(()),
+        Geometry::BallBall { cut } => normal_speed(speed, speed * cut.to_radians().cos()),
+        Geometry::Cushion { angle } => normal_speed(speed, speed * angle.to_radians().sin()),
     }
+}
+
+/// The slowest approach along the contact normal the report resolves, m/s: a nanometre a
+/// second, far below any shot, and far above where the solver's state (in units of the
+/// approach speed) would underflow (an approach of 5e-324 m/s was 0, "not approaching").
+pub const MIN_NORMAL_SPEED: f64 = 1e-9;
+
+fn normal_speed(speed: f64, normal: f64) -> Result<(), ImpactReportError> {
+    if normal < MIN_NORMAL_SPEED {
+        return Err(ImpactReportError::NormalSpeed { speed, normal });
+    }
+    Ok(())
 }
 
 /// The report of the impact `spec`; `trace`, if given, receives the solver's samples.

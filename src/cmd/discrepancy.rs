@@ -3,7 +3,7 @@
 //! and Rerun overlays.
 
 use super::{bad_input, failed};
-use crate::output::{check_output, check_output_dir, write_atomic};
+use crate::output::{Outputs, check_output_dir, check_outputs};
 use crate::{plot, record};
 use anyhow::Context;
 use snooker_discrepancy::{self as dsc, Findings, Measurement, data_file};
@@ -43,12 +43,6 @@ pub fn run(args: Args) -> ExitCode {
         Ok(m) => m,
         Err(e) => return bad_input(e),
     };
-    if let Some(p) = &args.json
-        && !is_stdout(p)
-        && let Err(e) = check_output(p)
-    {
-        return bad_input(format!("--json {}: {e}", p.display()));
-    }
     if let (Some(p), Some(_)) = (&args.json, &args.cross_validate) {
         return bad_input(format!(
             "--json {}: --cross-validate writes no discrepancy report; its results go to \
@@ -56,13 +50,23 @@ pub fn run(args: Args) -> ExitCode {
             p.display()
         ));
     }
+    let mut outputs = vec![("--json", args.json.clone().filter(|p| !is_stdout(p)))];
     if let Some(d) = &args.report {
         // A file of that name, or a file on its way, is in the way of the report directory.
         for file in report_files(&m, args.cross_validate.is_some()) {
             if let Err(e) = check_output_dir(d, &file) {
                 return bad_input(format!("--report {}: {file}: {e}", d.display()));
             }
+            outputs.push(("--report", Some(d.join(file))));
         }
+    }
+    // No output may replace another, nor a file the run reads (the data file, what it names,
+    // the model file).
+    let mut inputs = data_file::files(&args.data);
+    inputs.extend(args.model.clone());
+    let inputs: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
+    if let Err(e) = check_outputs(&outputs, &inputs) {
+        return bad_input(e);
     }
     if let Some(prefix) = &args.cross_validate {
         return cross_validation(&args, &m, prefix);
@@ -124,41 +128,40 @@ fn is_stdout(p: &Path) -> bool {
     p.as_os_str() == "-"
 }
 
-/// Writes the JSON report and the report directory.
+/// Writes the JSON report and the report directory, all or none ([`Outputs`]).
 fn write(req: &Args, m: &Measurement, o: &Findings) -> anyhow::Result<Vec<PathBuf>> {
     let doc = dsc::report::json(m, o);
     let text = serde_json::to_string_pretty(&doc)? + "\n";
+    let mut files = Outputs::default();
     let mut written = Vec::new();
-    if let Some(p) = &req.json {
-        if is_stdout(p) {
-            out!("{text}");
-        } else {
-            write_atomic(p, text.as_bytes())?;
-            written.push(p.clone());
-        }
+    let mut add = |flag: &str, p: PathBuf, bytes: &[u8]| {
+        files.add(flag, &p, bytes);
+        written.push(p);
+    };
+    if let Some(p) = req.json.as_ref().filter(|p| !is_stdout(p)) {
+        add("--json", p.clone(), text.as_bytes());
     }
     if let Some(dir) = &req.report {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-        let json_path = dir.join("report.json");
-        write_atomic(&json_path, text.as_bytes())?;
-        written.push(json_path);
-        let txt = dir.join("summary.txt");
-        write_atomic(&txt, dsc::report::text(m, o).as_bytes())?;
-        written.push(txt);
+        add("--report", dir.join("report.json"), text.as_bytes());
+        let summary = dsc::report::text(m, o);
+        add("--report", dir.join("summary.txt"), summary.as_bytes());
         if m.shots.iter().any(|s| !s.samples.is_empty()) {
-            let p = dir.join("tracks.png");
-            plot::tracks(m, &o.baseline.sims, &o.last.sims, &p)?;
-            written.push(p);
-            let p = dir.join("residuals.png");
-            plot::residuals(m, &o.baseline.sims, &o.last.sims, &p)?;
-            written.push(p);
+            let png = plot::png_bytes(|p| plot::tracks(m, &o.baseline.sims, &o.last.sims, p))?;
+            add("--report", dir.join("tracks.png"), &png);
+            let png = plot::png_bytes(|p| plot::residuals(m, &o.baseline.sims, &o.last.sims, p))?;
+            add("--report", dir.join("residuals.png"), &png);
         }
         if m.shots.iter().any(|s| !s.observables.is_empty()) {
-            let p = dir.join("observables.png");
-            plot::observables(o, &p)?;
-            written.push(p);
+            let png = plot::png_bytes(|p| plot::observables(o, p))?;
+            add("--report", dir.join("observables.png"), &png);
         }
-        written.extend(write_overlays(m, o, dir)?);
+        for (p, bytes) in overlays(m, o, dir)? {
+            add("--report", p, &bytes);
+        }
+    }
+    files.commit().map_err(anyhow::Error::msg)?;
+    if req.json.as_deref().is_some_and(is_stdout) {
+        out!("{text}");
     }
     Ok(written)
 }
@@ -189,10 +192,10 @@ pub fn overlay_file(m: &Measurement, index: usize) -> String {
     format!("overlay-{index}-{name}.rrd")
 }
 
-/// One Rerun recording per tracked shot: the final model's shot as balls, with the measured
+/// One Rerun recording per tracked shot, with its path: the final model's shot as balls, with the measured
 /// centroids (`measured/<ball>`) and the start model's centres at the same times
 /// (`start_model/<ball>`) as points on the cloth.
-fn write_overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+fn overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<Vec<(PathBuf, Vec<u8>)>> {
     let mut written = Vec::new();
     for (i, shot) in m.shots.iter().enumerate() {
         if shot.samples.is_empty() {
@@ -235,9 +238,7 @@ fn write_overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<V
         let bytes =
             record::encode_with_overlays(&view, last, &record::RecordOptions::default(), &overlays)
                 .with_context(|| format!("overlay recording of shot {}", shot.name))?;
-        let p = dir.join(overlay_file(m, i));
-        write_atomic(&p, &bytes)?;
-        written.push(p);
+        written.push((dir.join(overlay_file(m, i)), bytes));
     }
     Ok(written)
 }
@@ -321,16 +322,19 @@ fn cross_validation(args: &Args, m: &Measurement, prefix: &str) -> ExitCode {
         out!("{md}");
     }
     if let Some(dir) = &args.report {
-        let json = serde_json::to_string_pretty(&rows).map(|t| t + "\n");
-        let res = std::fs::create_dir_all(dir)
-            .map_err(anyhow::Error::from)
-            .and_then(|_| write_atomic(&dir.join("cross-validation.md"), md.as_bytes()))
-            .and_then(|_| {
-                let text = json.map_err(anyhow::Error::from)?;
-                write_atomic(&dir.join("cross-validation.json"), text.as_bytes())
-            });
-        if let Err(e) = res {
-            return bad_input(format!("{e:#}"));
+        let json = match serde_json::to_string_pretty(&rows) {
+            Ok(t) => t + "\n",
+            Err(e) => return failed(format!("the cross-validation as JSON: {e}")),
+        };
+        let mut files = Outputs::default();
+        files.add("--report", &dir.join("cross-validation.md"), md.as_bytes());
+        files.add(
+            "--report",
+            &dir.join("cross-validation.json"),
+            json.as_bytes(),
+        );
+        if let Err(e) = files.commit() {
+            return bad_input(e);
         }
     }
     ExitCode::SUCCESS

@@ -132,6 +132,7 @@ fn plan_error(e: &PlanError) -> String {
 /// `bounds` with the intervals of `spec` ("speed=0.3..6,elevation=0..0,side=-0.01..0.01,
 /// height=..."); the planner checks them against the engine's limits.
 fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
+    let mut given = Vec::new();
     for part in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
         let syntax = || format!("--bounds {part}: expected NAME=LO..HI");
         let (name, range) = part.split_once('=').ok_or_else(syntax)?;
@@ -142,6 +143,11 @@ fn parse_bounds(spec: &str, mut bounds: Bounds) -> Result<Bounds, String> {
                 name.trim()
             )
         })?;
+        // A variable given twice kept its last interval silently: a typo, refused.
+        if given.contains(&var) {
+            return Err(format!("--bounds {spec}: `{}` is given twice", name.trim()));
+        }
+        given.push(var);
         let num = |s: &str| {
             s.trim()
                 .parse::<f64>()

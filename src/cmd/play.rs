@@ -270,7 +270,7 @@ fn cue_way(shot: &snooker_engine::Shot, cue: usize, speed: f64) -> Vec<[f32; 3]>
 
 /// Runs the command.
 pub fn run(args: Args) -> ExitCode {
-    let file = match snooker_rules::load(&args.frame) {
+    let file = match snooker_rules::file::load_position(&args.frame) {
         Ok(f) => f,
         Err(e) => return bad_input(e),
     };

@@ -5,21 +5,25 @@
 use snooker_engine::Params;
 use snooker_scene::OverrideError;
 
-/// `NAME=VALUE` overrides as (name, value) pairs; a malformed one is a message naming it.
+/// `NAME=VALUE` overrides as (name, value) pairs; a malformed one, or a name given twice (a
+/// typo: the last value was kept silently), is a message naming it.
 pub fn param_pairs(given: &[String]) -> Result<Vec<(String, f64)>, String> {
-    given
-        .iter()
-        .map(|o| {
-            let (name, value) = o
-                .split_once('=')
-                .ok_or_else(|| format!("--param {o}: expected NAME=VALUE"))?;
-            let v: f64 = value
-                .trim()
-                .parse()
-                .map_err(|_| format!("--param {o}: {value} is not a number"))?;
-            Ok((name.trim().to_string(), v))
-        })
-        .collect()
+    let mut pairs: Vec<(String, f64)> = Vec::new();
+    for o in given {
+        let (name, value) = o
+            .split_once('=')
+            .ok_or_else(|| format!("--param {o}: expected NAME=VALUE"))?;
+        let v: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| format!("--param {o}: {value} is not a number"))?;
+        let name = name.trim().to_string();
+        if pairs.iter().any(|(n, _)| *n == name) {
+            return Err(format!("--param {o}: `{name}` is given twice"));
+        }
+        pairs.push((name, v));
+    }
+    Ok(pairs)
 }
 
 /// An override error as the command says it, naming the `--param` given.
@@ -126,6 +130,19 @@ pub fn noise(
 mod tests {
     use super::*;
     use snooker_planner::Noise;
+
+    /// A parameter named twice is refused (impact kept the last of `e_ball=0`, `e_ball=1`).
+    #[test]
+    fn a_param_given_twice_is_refused() {
+        let given = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let e = param_pairs(&given(&["e_ball=0", " e_ball = 1"])).unwrap_err();
+        assert!(e.contains("`e_ball` is given twice"), "{e}");
+        let ok = param_pairs(&given(&["e_ball=0.9", "mu_ball=0.1"])).unwrap();
+        assert_eq!(
+            ok,
+            [("e_ball".to_string(), 0.9), ("mu_ball".to_string(), 0.1)]
+        );
+    }
 
     #[test]
     fn noise_specs() {

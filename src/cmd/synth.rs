@@ -83,11 +83,7 @@ pub fn run(args: Args) -> ExitCode {
     {
         let (flag, given, range) = match setting {
             "fps" => ("--fps", args.fps, range.to_string()),
-            "noise" => (
-                "--noise",
-                args.noise,
-                "between 0.001 and 100 mm".to_string(),
-            ),
+            "noise" => ("--noise", args.noise, "in [0, 100) mm".to_string()),
             "drop rate" => ("--drop", args.drop, range.to_string()),
             _ => ("--duration", args.duration, "positive (s)".to_string()),
         };

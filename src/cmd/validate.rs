@@ -9,6 +9,10 @@ use snooker_validation::report::{self, Report};
 use snooker_validation::scenes::BUILTIN;
 use std::path::{Path, PathBuf};
 
+/// The finest rapier time step `--dt` takes, s: 10^5 steps a simulated second (1e-300 was
+/// taken, and the cross-check never finished).
+pub const MIN_DT: f64 = 1e-5;
+
 /// Time steps of the convergence study, s (halving).
 pub const STUDY_STEPS: [f64; 5] = [4e-4, 2e-4, 1e-4, 5e-5, 2.5e-5];
 
@@ -37,7 +41,11 @@ pub struct Args {
 #[derive(Debug, thiserror::Error)]
 pub enum BadInput {
     /// The time step is not in (0, 0.01] s.
-    #[error("--dt {0}: must be a time step in (0, 0.01] s")]
+    #[error(
+        "--dt {}: must be a time step in [1e-5, 0.01] s (a finer one takes rapier hours \
+         for a shot of seconds; the time-step study's finest is 2.5e-5 s)",
+        snooker_engine::shown::Shown(*.0)
+    )]
     Dt(f64),
     /// A scene file is not valid.
     #[error(transparent)]
@@ -45,24 +53,14 @@ pub enum BadInput {
     /// The report could not be encoded as JSON.
     #[error("the report as JSON: {0}")]
     Json(#[from] serde_json::Error),
-    /// An output path cannot become a file (checked before the run).
-    #[error("--{flag} {}: {source}", path.display())]
-    Output {
-        /// The option naming it (`json`, `markdown`).
-        flag: &'static str,
-        /// The path.
-        path: PathBuf,
-        /// Why.
-        source: crate::output::OutputError,
-    },
-    /// An output file could not be written.
-    #[error("cannot write {}: {source:#}", path.display())]
-    Write {
-        /// The file.
-        path: PathBuf,
-        /// Why.
-        source: anyhow::Error,
-    },
+    /// An output path cannot become a file, is another output's, or is an input (checked
+    /// before the run).
+    #[error("{0}")]
+    Output(String),
+    /// An output file could not be written (nothing was: the outputs are put in place
+    /// together).
+    #[error("{0}")]
+    Write(String),
 }
 
 /// Loads the requested scenes (or the built-in set).
@@ -147,21 +145,13 @@ pub fn run(args: &Args, specs: &[SceneSpec]) -> Report {
     }
 }
 
-/// Writes `text` to `path`, naming the path in the error.
-pub fn write(path: &Path, text: &str) -> Result<(), BadInput> {
-    crate::output::write_atomic(path, text.as_bytes()).map_err(|source| BadInput::Write {
-        path: path.to_path_buf(),
-        source,
-    })
-}
-
 /// Whether `--json` asks for standard output (`-`, as `simulate`, `referee` and `plan` take it).
 fn json_to_stdout(args: &Args) -> bool {
     args.json.as_ref().is_some_and(|p| p.as_os_str() == "-")
 }
 
-/// Prints the report and writes the requested files; with `--json -` the JSON is standard
-/// output's and the text report goes to standard error.
+/// Prints the report and writes the requested files, all or none; with `--json -` the JSON
+/// is standard output's and the text report goes to standard error.
 pub fn output(args: &Args, report: &Report) -> Result<(), BadInput> {
     let to_stdout = json_to_stdout(args);
     let say = |text: &str| {
@@ -172,36 +162,43 @@ pub fn output(args: &Args, report: &Report) -> Result<(), BadInput> {
         }
     };
     say(&report::text(report));
-    if let Some(p) = &args.json {
-        let text = serde_json::to_string_pretty(report)? + "\n";
+    let mut files = crate::output::Outputs::default();
+    let json = match &args.json {
+        Some(_) => Some(serde_json::to_string_pretty(report)? + "\n"),
+        None => None,
+    };
+    if let (Some(p), Some(text)) = (&args.json, &json)
+        && !to_stdout
+    {
+        files.add("--json", p, text.as_bytes());
+    }
+    if let Some(p) = &args.markdown {
+        files.add("--markdown", p, report::markdown(report).as_bytes());
+    }
+    files.commit().map_err(BadInput::Write)?;
+    if let (Some(p), Some(text)) = (&args.json, &json) {
         if to_stdout {
             out!("{text}");
         } else {
-            write(p, &text)?;
             say(&format!("JSON written to {}\n", p.display()));
         }
     }
     if let Some(p) = &args.markdown {
-        write(p, &report::markdown(report))?;
         say(&format!("Markdown written to {}\n", p.display()));
     }
     Ok(())
 }
 
-/// Checks, before the cross-check's minutes, that `--json` and `--markdown` can be written.
+/// Checks, before the cross-check's minutes, that `--json` and `--markdown` can be written,
+/// are not one file, and are not a scene checked.
 fn check_outputs(args: &Args) -> Result<(), BadInput> {
     let json = args.json.clone().filter(|_| !json_to_stdout(args));
-    let outputs = [("json", &json), ("markdown", &args.markdown)];
-    for (flag, path) in outputs {
-        if let Some(path) = path {
-            crate::output::check_output(path).map_err(|source| BadInput::Output {
-                flag,
-                path: path.clone(),
-                source,
-            })?;
-        }
-    }
-    Ok(())
+    let inputs: Vec<&Path> = args.scenes.iter().map(PathBuf::as_path).collect();
+    crate::output::check_outputs(
+        &[("--json", json), ("--markdown", args.markdown.clone())],
+        &inputs,
+    )
+    .map_err(BadInput::Output)
 }
 
 /// Runs the command: exit 0 when every verdict passed, 1 when one failed, 2 for bad input or
@@ -218,7 +215,7 @@ pub fn run_command(args: Args) -> std::process::ExitCode {
 /// verdict passed, `Ok(false)` when one failed, `Err` for bad input or an output that could
 /// not be written.
 pub fn execute(args: &Args) -> Result<bool, BadInput> {
-    if !(args.dt.is_finite() && args.dt > 0.0 && args.dt <= 1e-2) {
+    if !(args.dt.is_finite() && args.dt >= MIN_DT && args.dt <= 1e-2) {
         return Err(BadInput::Dt(args.dt));
     }
     check_outputs(args)?;
