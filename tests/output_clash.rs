@@ -42,16 +42,12 @@ fn two_spellings_of_one_output_are_refused() {
     let scene = std::fs::read_to_string("scenes/cut-30.toml").unwrap();
     std::fs::write(dir.join("s.toml"), &scene).unwrap();
     let kept = [("s.toml", scene.as_str())];
-    let (json, rrd) = (dir.join("o/a.json"), dir.join("o/../o/a.json"));
     let input = dir.join("s.toml");
-    let args = [
-        "simulate",
-        s(&input),
-        "--json",
-        s(&json),
-        "--record",
-        s(&rrd),
-    ];
+    let simulate = |json: &Path, rrd: &Path| {
+        ["simulate", s(&input), "--json", s(json), "--record", s(rrd)].map(String::from)
+    };
+    let args = simulate(&dir.join("o/a.json"), &dir.join("o/../o/a.json"));
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
     refused(&args, "is also --json's file", &dir, &kept);
     let (json, frame_out) = (dir.join("r.json"), dir.join("./x/../r.json"));
     let frame = "scenes/frames/break-off.toml";
@@ -68,16 +64,8 @@ fn two_spellings_of_one_output_are_refused() {
     {
         std::os::unix::fs::symlink("o", dir.join("link")).unwrap();
         std::fs::create_dir(dir.join("o")).unwrap();
-        let (json, rrd) = (dir.join("o/a.json"), dir.join("link/a.json"));
-        let args = [
-            "simulate",
-            s(&input),
-            "--json",
-            s(&json),
-            "--record",
-            s(&rrd),
-        ];
-        let o = snooker(&args);
+        let args = simulate(&dir.join("o/a.json"), &dir.join("link/a.json"));
+        let o = snooker(&args.iter().map(String::as_str).collect::<Vec<_>>());
         assert_eq!(o.status.code(), Some(2));
         assert!(String::from_utf8_lossy(&o.stderr).contains("is also --json's file"));
         assert_eq!(std::fs::read_dir(dir.join("o")).unwrap().count(), 0);

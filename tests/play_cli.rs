@@ -65,9 +65,16 @@ fn check_via(k: usize, line: &Value) {
     }
 }
 
+/// One stroke, searched cheaply on one thread.
+const ONE_QUICK_STROKE: [&str; 6] = ["--max-strokes", "1", "--effort", "50", "--threads", "1"];
+
 fn play(dir: &Path, extra: &[&str], log: &str) -> std::process::Output {
+    play_frame(OPEN, dir, extra, log)
+}
+
+fn play_frame(frame: &str, dir: &Path, extra: &[&str], log: &str) -> std::process::Output {
     let log = dir.join(log);
-    let mut args = vec!["play", OPEN, "--log", log.to_str().unwrap(), "--quiet"];
+    let mut args = vec!["play", frame, "--log", log.to_str().unwrap(), "--quiet"];
     args.extend_from_slice(extra);
     snooker(&args)
 }
@@ -237,23 +244,15 @@ fn a_frames_cue_is_ignored_not_judged() {
     let o = snooker(&["referee", frame.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("frame.nominated"));
-    let log = dir.join("log.jsonl");
-    let o = snooker(&[
-        "play",
+    let o = play_frame(
         frame.to_str().unwrap(),
-        "--log",
-        log.to_str().unwrap(),
-        "--max-strokes",
-        "1",
-        "--effort",
-        "50",
-        "--threads",
-        "1",
-        "--quiet",
-    ]);
+        &dir,
+        &ONE_QUICK_STROKE,
+        "log.jsonl",
+    );
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
-    let line = &lines(&log)[0];
+    let line = &lines(&dir.join("log.jsonl"))[0];
     assert_ne!(line["nominated"], "", "{line}");
     assert!(line["frame"].as_str().unwrap().contains("on = \"colour\""));
 }
@@ -265,20 +264,8 @@ fn a_frames_cue_is_ignored_not_judged() {
 #[test]
 fn a_huge_but_finite_noise_is_played() {
     let dir = temp_dir("play-loud");
-    let o = play(
-        &dir,
-        &[
-            "--noise",
-            "standard*10000",
-            "--max-strokes",
-            "1",
-            "--effort",
-            "50",
-            "--threads",
-            "1",
-        ],
-        "log.jsonl",
-    );
+    let extra = [&["--noise", "standard*10000"][..], &ONE_QUICK_STROKE].concat();
+    let o = play(&dir, &extra, "log.jsonl");
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
     let log = lines(&dir.join("log.jsonl"));
