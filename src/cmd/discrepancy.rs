@@ -192,9 +192,9 @@ pub fn overlay_file(m: &Measurement, index: usize) -> String {
     format!("overlay-{index}-{name}.rrd")
 }
 
-/// One Rerun recording per tracked shot, with its path: the final model's shot as balls, with the measured
-/// centroids (`measured/<ball>`) and the start model's centres at the same times
-/// (`start_model/<ball>`) as points on the cloth.
+/// One Rerun recording per tracked shot, with its path: the final model's shot as balls,
+/// with the measured centroids (`measured/<ball>`) and the start model's centres at the same
+/// times (`start_model/<ball>`) as points on the cloth.
 fn overlays(m: &Measurement, o: &Findings, dir: &Path) -> anyhow::Result<Vec<(PathBuf, Vec<u8>)>> {
     let mut written = Vec::new();
     for (i, shot) in m.shots.iter().enumerate() {
